@@ -1,0 +1,104 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * Signed distance of the union of balls: min_i (|x - c_i| - r_i), negative
+   * inside. Exact outside; inside the overlap of two balls it underestimates
+   * the depth, which leaves the zero level set exact.
+   */
+  template <int dim>
+  class UnionOfBalls : public Function<dim>
+  {
+  public:
+    UnionOfBalls(const std::vector<Point<dim>> &centres,
+                 const std::vector<double>     &radii);
+
+    /** Rows (x, y[, z], r), as the scene parameters hold them. */
+    explicit UnionOfBalls(const std::vector<std::vector<double>> &particles);
+
+    double
+    value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    const std::vector<Point<dim>> &
+    centres() const
+    {
+      return ball_centres;
+    }
+
+    const std::vector<double> &
+    radii() const
+    {
+      return ball_radii;
+    }
+
+  private:
+    std::vector<Point<dim>> ball_centres;
+    std::vector<double>     ball_radii;
+  };
+
+  /**
+   * Exact signed distance to Zalesak's slotted disk (2D): a disk with a
+   * vertical slot of the given width cut from its bottom up to the given
+   * depth. The boundary is one circular arc and three segments.
+   */
+  class SlottedDisk : public Function<2>
+  {
+  public:
+    SlottedDisk(const Point<2> &centre,
+                const double    radius,
+                const double    slot_width,
+                const double    slot_depth);
+
+    double
+    value(const Point<2> &p, const unsigned int component = 0) const override;
+
+    /** Exact area and perimeter (for conservation and shape errors). */
+    double
+    area() const;
+    double
+    perimeter() const;
+
+  private:
+    bool
+    inside(const Point<2> &p) const;
+
+    Point<2> centre;
+    double   radius;
+    double   half_width;
+    double   slot_top; // y of the slot's upper end
+    double   slot_bottom; // y where the slot leaves the disk (on the arc)
+  };
+
+  /**
+   * Exact volume (area in 2D) and surface area (perimeter in 2D) of two
+   * equal balls of radius r whose centres are d apart (d < 2r: they
+   * overlap in a lens).
+   */
+  template <int dim>
+  double
+  two_ball_volume(const double r, const double d);
+
+  template <int dim>
+  double
+  two_ball_surface(const double r, const double d);
+} // namespace levelsinter
+
+#include <levelsinter/scene/scene_parameters.h>
+
+#include <memory>
+
+namespace levelsinter
+{
+  /** The signed distance of the scene's solid at t = 0 (Geometry section). */
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_initial_signed_distance(const SceneParameters &scene);
+} // namespace levelsinter

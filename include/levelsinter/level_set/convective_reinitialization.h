@@ -1,0 +1,84 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/mechanisms/velocity_field.h>
+
+namespace levelsinter
+{
+  /**
+   * One time step of the filtered level set's transport with convective
+   * reinitialisation (paper Eq. 68):
+   *
+   *   d alpha/dt + (v + lambda v_r) . grad alpha = lambda sgn(alpha) g(alpha),
+   *
+   * lambda = h_min / dt, v_r = sgn(alpha) grad alpha / |grad alpha| and g the
+   * filter's gradient-norm target (Eq. 67). As in the paper, v_r and the
+   * right-hand side are taken from the previous step (linearisation), the
+   * sign is smoothed as alpha / sqrt(alpha^2 + (h_K |grad alpha|)^2)
+   * (Eq. 57 with eps = h_K, scaled so that it does not depend on the
+   * gradient's size), and the equation is stabilised by SUPG (Eq. 72) with
+   * the transient tau = ((2/dt)^2 + (2|w|/h_K)^2)^(-1/2), which reduces to
+   * Eq. 73 (h_K / 2|w|) when the step is large. The transport term is
+   * discretised with the theta method (0.5: Crank-Nicolson) where the paper
+   * used explicit Euler: the reinitialisation velocity has a Courant number
+   * of one by construction (lambda dt = h), which explicit Euler sits on the
+   * edge of. An isotropic diffusion proportional to the reinitialisation
+   * speed (zero on the interface) damps the checkerboard mode that SUPG
+   * leaves undamped where streamlines run diagonal to the cells (see
+   * doc/numerics.md). On the inflow part of the boundary alpha is set weakly to the
+   * atmosphere's saturated value.
+   */
+  template <int dim>
+  class ConvectiveReinitialization
+  {
+  public:
+    struct Settings
+    {
+      double       theta            = 0.5;
+      double       solver_tolerance = 1e-10;
+      unsigned int max_iterations   = 1000;
+      // lambda dt / h_min; the paper's choice is 1.
+      double reinitialization_strength = 0.25;
+      // c in the reinitialisation diffusion nu = c (h_min / dt) |sgn(alpha)| h.
+      double reinitialization_diffusion = 0.02;
+    };
+
+    ConvectiveReinitialization(const LevelSetFilter &filter,
+                               const Settings       &settings,
+                               TimerOutput          &timer);
+
+    /** Size the matrix for the level set's current DoFs; after each remesh. */
+    void
+    setup_system(const LevelSetField<dim> &level_set);
+
+    /**
+     * Advance alpha by dt with the given velocity (evaluated by the caller
+     * at the time the theta scheme needs). Returns the GMRES iterations;
+     * throws if the solver fails.
+     */
+    unsigned int
+    advance(LevelSetField<dim>       &level_set,
+            const VelocityField<dim> &velocity,
+            const double              dt);
+
+  private:
+    void
+    assemble(const LevelSetField<dim>       &level_set,
+             const VelocityField<dim>       &velocity,
+             const double                    dt,
+             TrilinosWrappers::MPI::Vector &rhs);
+
+    const LevelSetFilter             filter;
+    const Settings                   settings;
+    TimerOutput                     &timer;
+    TrilinosWrappers::SparseMatrix   matrix;
+    TrilinosWrappers::PreconditionILU preconditioner;
+    double                            h_min = 0;
+  };
+} // namespace levelsinter

@@ -1,0 +1,76 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
+
+namespace levelsinter
+{
+  /**
+   * Geometry measured on the discrete zero level set {alpha_h = 0} with
+   * sharp cut-cell quadrature (deal.II NonMatching, Saye's algorithm): the
+   * measurement error is that of the Q1 level set itself, not of a smeared
+   * Heaviside.
+   */
+  namespace interface_measures
+  {
+    struct VolumeAndArea
+    {
+      double solid_volume   = 0; // area in 2D
+      double interface_area = 0; // length in 2D
+    };
+
+    template <int dim>
+    VolumeAndArea
+    volume_and_area(const LevelSetField<dim> &level_set);
+
+    /**
+     * Distance of the discrete interface from an exact one, given as a signed
+     * distance function: the integral of |d| over {alpha_h = 0} (to first
+     * order the area of the symmetric difference between the two solids), and
+     * the largest |d| at a quadrature point.
+     */
+    struct ShapeError
+    {
+      double symmetric_difference = 0;
+      double max_distance         = 0;
+    };
+
+    template <int dim>
+    ShapeError
+    shape_error(const LevelSetField<dim> &level_set,
+                const Function<dim>      &exact_signed_distance);
+
+    /**
+     * Neck radius between two particles centred at c1 and c2: the distance
+     * from the midpoint to the interface across the plane through the
+     * midpoint normal to c2 - c1, averaged over rays in that plane (2 rays in
+     * 2D, i.e. the half-width; 8 in 3D). Rays that leave the domain before
+     * meeting the interface (symmetry planes) are skipped. Zero when the
+     * midpoint lies outside the solid.
+     */
+    template <int dim>
+    double
+    neck_radius(const LevelSetField<dim> &level_set,
+                const Point<dim>         &c1,
+                const Point<dim>         &c2);
+
+    /**
+     * How well alpha satisfies the reinitialisation target |grad alpha| =
+     * g(alpha) (Eq. 67) where the filter is not saturated (|d| <= E/2):
+     * the largest and the root-mean-square deviation over that region.
+     */
+    struct GradientNormError
+    {
+      double max_error = 0;
+      double rms_error = 0;
+    };
+
+    template <int dim>
+    GradientNormError
+    gradient_norm_error(const LevelSetField<dim> &level_set,
+                        const LevelSetFilter     &filter);
+  } // namespace interface_measures
+} // namespace levelsinter

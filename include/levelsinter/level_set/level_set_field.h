@@ -1,0 +1,109 @@
+#pragma once
+
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <memory>
+
+namespace dealii::parallel::distributed
+{
+  template <int dim, typename VectorType, int spacedim>
+  class SolutionTransfer;
+}
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The discrete filtered level set alpha_h: Q1 on the distributed mesh,
+   * with hanging-node constraints and a ghosted copy for reading across
+   * process boundaries. Owns nothing but the field; the solvers and
+   * measurements act on it.
+   */
+  template <int dim>
+  class LevelSetField
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    explicit LevelSetField(const parallel::distributed::Triangulation<dim> &tria);
+    ~LevelSetField();
+
+    /** Distribute DoFs and size the vectors for the current mesh. */
+    void
+    setup_dofs();
+
+    /** alpha = filter(distance(x)), interpolated at the nodes. */
+    void
+    interpolate(const Function<dim> &filtered_level_set);
+
+    /** Call before refinement is executed; pairs with transfer_after(). */
+    void
+    prepare_for_refinement();
+
+    /** After refinement: setup_dofs() and move alpha to the new mesh. */
+    void
+    transfer_after_refinement();
+
+    /** Set the ghosted vector from an owned-only one, applying constraints. */
+    void
+    set_from_owned(Vector &owned);
+
+    const DoFHandler<dim> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+
+    const AffineConstraints<double> &
+    constraints() const
+    {
+      return hanging_node_constraints;
+    }
+
+    const IndexSet &
+    locally_owned() const
+    {
+      return owned_dofs;
+    }
+
+    const IndexSet &
+    locally_relevant() const
+    {
+      return relevant_dofs;
+    }
+
+    /** alpha with ghost entries, for assembly, measurements and output. */
+    const Vector &
+    alpha() const
+    {
+      return ghosted_alpha;
+    }
+
+    const FE_Q<dim> &
+    fe() const
+    {
+      return finite_element;
+    }
+
+  private:
+    FE_Q<dim>                 finite_element;
+    DoFHandler<dim>           dofs;
+    AffineConstraints<double> hanging_node_constraints;
+    IndexSet                  owned_dofs;
+    IndexSet                  relevant_dofs;
+    Vector                    ghosted_alpha;
+    std::unique_ptr<
+      parallel::distributed::SolutionTransfer<dim, Vector, dim>>
+      transfer;
+  };
+} // namespace levelsinter

@@ -1,0 +1,67 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/index_set.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The interface velocity as a continuous Q1 vector field: what the
+   * mechanisms produce and the level-set transport consumes. Prescribed
+   * velocities are interpolated into it, later mechanisms solve for it.
+   */
+  template <int dim>
+  class VelocityField
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    explicit VelocityField(const parallel::distributed::Triangulation<dim> &tria);
+
+    void
+    setup_dofs();
+
+    /** Nodal interpolation of a dim-component function at its current time. */
+    void
+    interpolate(const Function<dim> &velocity);
+
+    /** max over the nodes of |v| (all processes). */
+    double
+    max_norm() const;
+
+    const DoFHandler<dim> &
+    dof_handler() const
+    {
+      return dofs;
+    }
+
+    const FESystem<dim> &
+    fe() const
+    {
+      return finite_element;
+    }
+
+    const Vector &
+    values() const
+    {
+      return ghosted_velocity;
+    }
+
+  private:
+    FESystem<dim>   finite_element;
+    DoFHandler<dim> dofs;
+    IndexSet        owned_dofs;
+    IndexSet        relevant_dofs;
+    Vector          ghosted_velocity;
+  };
+} // namespace levelsinter

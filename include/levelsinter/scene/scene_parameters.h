@@ -1,0 +1,102 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+
+#include <string>
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * Everything a scene file says, parsed and checked. The entries are
+   * declared once (declare_parameters()) so that `--print-parameters` and the
+   * parser always agree. Coordinates are kept as std::vector<double> of
+   * length `dimension` because the dimension itself is a parameter.
+   */
+  struct SceneParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /**
+     * Read the values out of a parsed handler and check the ones the
+     * patterns cannot (vector lengths, orderings, files). Throws
+     * std::runtime_error with a message naming the entry.
+     * @p scene_directory resolves relative file names.
+     */
+    void
+    parse_parameters(ParameterHandler &prm, const std::string &scene_directory);
+
+    unsigned int dimension = 2;
+
+    struct Domain
+    {
+      std::vector<double>       lower_corner;
+      std::vector<double>       upper_corner;
+      std::vector<unsigned int> subdivisions;
+    } domain;
+
+    struct Geometry
+    {
+      std::string shape; // "particles" or "slotted disk"
+      // Inline particles and the particle file are merged: x, y[, z], r.
+      std::vector<std::vector<double>> particles;
+      std::string                      particle_file;
+      std::vector<double>              slotted_disk_centre;
+      double                           slotted_disk_radius = 0;
+      double                           slot_width          = 0;
+      double                           slot_depth          = 0;
+    } geometry;
+
+    struct LevelSet
+    {
+      std::string  filter; // "sine" (Eq. 65) or "tanh" (Eq. 69)
+      double       filter_thickness = 0;
+      double       theta            = 0.5;
+      double       solver_tolerance = 1e-10;
+      unsigned int max_iterations   = 1000;
+      double       reinitialization_strength  = 0.25;
+      double       reinitialization_diffusion = 0.02;
+    } level_set;
+
+    struct Refinement
+    {
+      unsigned int min_level      = 0;
+      unsigned int max_level      = 0;
+      double       band_width     = 0;
+      unsigned int adapt_interval = 1;
+    } refinement;
+
+    struct Time
+    {
+      double       end_time  = 0;
+      double       time_step = 0; // 0: from the CFL number
+      double       cfl       = 0.5;
+      unsigned int max_steps = 0; // 0: unlimited
+    } time;
+
+    struct Velocity
+    {
+      std::string         type; // none, constant, rotation, expression
+      std::vector<double> constant;
+      std::vector<double> rotation_centre;
+      std::vector<double> rotation_axis;
+      double              angular_velocity = 0;
+      std::string         expression;
+      std::string         expression_constants;
+    } velocity;
+
+    struct Output
+    {
+      std::string  directory;
+      unsigned int field_interval    = 0;
+      bool         write_vtu         = true;
+      bool         write_xdmf        = true;
+      unsigned int metrics_interval  = 1;
+      unsigned int progress_interval = 10;
+    } output;
+  };
+} // namespace levelsinter

@@ -1,0 +1,115 @@
+#pragma once
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <levelsinter/grid/interface_band_refinement.h>
+#include <levelsinter/io/field_output.h>
+#include <levelsinter/io/metrics_log.h>
+#include <levelsinter/level_set/convective_reinitialization.h>
+#include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/mechanisms/velocity_field.h>
+#include <levelsinter/scene/scene_parameters.h>
+
+#include <chrono>
+#include <memory>
+
+namespace levelsinter
+{
+  /**
+   * One scene from t = 0 to the end time. Each step reads like the physics:
+   * interface velocity (here prescribed) -> transport with convective
+   * reinitialisation -> adapt the mesh around the interface -> metrics and
+   * fields.
+   */
+  template <int dim>
+  class Simulation
+  {
+  public:
+    /** Everything a caller (main or a test) may want after run(). */
+    struct Summary
+    {
+      unsigned int steps                = 0;
+      double       time                 = 0;
+      double       wall_time            = 0;
+      unsigned int max_cells            = 0;
+      unsigned int max_dofs             = 0;
+      double       mean_iterations      = 0;
+      double       initial_solid_volume = 0;
+    };
+
+    Simulation(const SceneParameters &scene,
+               const MPI_Comm         comm,
+               std::ostream          &progress_stream);
+
+    /** Build the mesh and alpha at t = 0 (run() calls it if needed). */
+    void
+    initialise();
+
+    Summary
+    run();
+
+    const LevelSetField<dim> &
+    level_set() const
+    {
+      return alpha;
+    }
+
+    const LevelSetFilter &
+    filter() const
+    {
+      return level_set_filter;
+    }
+
+    const parallel::distributed::Triangulation<dim> &
+    triangulation() const
+    {
+      return tria;
+    }
+
+    /** Wall time per phase (assembly, solve, adaptation, metrics, output). */
+    TimerOutput &
+    timer()
+    {
+      return timer_output;
+    }
+
+  private:
+    void
+    refine_initial_mesh();
+    void
+    adapt_mesh();
+    double
+    choose_time_step(const double t) const;
+    void
+    record(const unsigned int step,
+           const double       t,
+           const double       dt,
+           const bool         final_step);
+
+    const SceneParameters                     scene;
+    const MPI_Comm                            comm;
+    ConditionalOStream                        pcout;
+    TimerOutput                               timer_output;
+    parallel::distributed::Triangulation<dim> tria;
+    LevelSetFilter                            level_set_filter;
+    LevelSetField<dim>                        alpha;
+    VelocityField<dim>                        velocity;
+    std::unique_ptr<Function<dim>>            prescribed_velocity;
+    std::unique_ptr<Function<dim>>            initial_distance;
+    InterfaceBandRefinement<dim>              band_refinement;
+    ConvectiveReinitialization<dim>           transport;
+    std::unique_ptr<MetricsLog>               metrics;
+    FieldOutput<dim>                          field_output;
+    double                                    h_min;
+    Summary                                   summary;
+    unsigned int                              total_iterations = 0;
+    unsigned int                              last_iterations  = 0;
+    bool                                      initialised      = false;
+    std::chrono::steady_clock::time_point     start;
+  };
+} // namespace levelsinter

@@ -1,0 +1,175 @@
+#include <levelsinter/analysis/reference_shapes.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  template <int dim>
+  UnionOfBalls<dim>::UnionOfBalls(const std::vector<Point<dim>> &centres,
+                                  const std::vector<double>     &radii)
+    : ball_centres(centres)
+    , ball_radii(radii)
+  {
+    if (centres.size() != radii.size() || centres.empty())
+      throw std::invalid_argument("UnionOfBalls needs one radius per centre");
+  }
+
+  template <int dim>
+  UnionOfBalls<dim>::UnionOfBalls(
+    const std::vector<std::vector<double>> &particles)
+  {
+    for (const auto &row : particles)
+      {
+        if (row.size() != dim + 1)
+          throw std::invalid_argument("a particle needs dim + 1 values");
+        Point<dim> c;
+        for (unsigned int d = 0; d < dim; ++d)
+          c[d] = row[d];
+        ball_centres.push_back(c);
+        ball_radii.push_back(row[dim]);
+      }
+  }
+
+  template <int dim>
+  double
+  UnionOfBalls<dim>::value(const Point<dim> &p, const unsigned int) const
+  {
+    double d = std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < ball_centres.size(); ++i)
+      d = std::min(d, p.distance(ball_centres[i]) - ball_radii[i]);
+    return d;
+  }
+
+  SlottedDisk::SlottedDisk(const Point<2> &centre,
+                           const double    radius,
+                           const double    slot_width,
+                           const double    slot_depth)
+    : centre(centre)
+    , radius(radius)
+    , half_width(slot_width / 2)
+    , slot_top(centre[1] - radius + slot_depth)
+    , slot_bottom(centre[1] -
+                  std::sqrt(radius * radius - half_width * half_width))
+  {}
+
+  bool
+  SlottedDisk::inside(const Point<2> &p) const
+  {
+    const bool in_disk = p.distance(centre) < radius;
+    const bool in_slot =
+      std::abs(p[0] - centre[0]) < half_width && p[1] < slot_top;
+    return in_disk && !in_slot;
+  }
+
+  namespace
+  {
+    double
+    distance_to_segment(const Point<2> &p, const Point<2> &a, const Point<2> &b)
+    {
+      const Tensor<1, 2> ab = b - a;
+      const double t = std::clamp((p - a) * ab / ab.norm_square(), 0.0, 1.0);
+      return p.distance(a + t * ab);
+    }
+  } // namespace
+
+  double
+  SlottedDisk::value(const Point<2> &p, const unsigned int) const
+  {
+    const double   xl = centre[0] - half_width, xr = centre[0] + half_width;
+    const Point<2> bl(xl, slot_bottom), tl(xl, slot_top), tr(xr, slot_top),
+      br(xr, slot_bottom);
+    double d = std::min({distance_to_segment(p, bl, tl),
+                         distance_to_segment(p, tl, tr),
+                         distance_to_segment(p, tr, br)});
+    // The arc excludes the slot's mouth: points whose angular projection
+    // falls in the mouth are nearest to one of its end points instead.
+    const Tensor<1, 2> r = p - centre;
+    const double       rn = r.norm();
+    const bool in_mouth = r[1] < 0 && std::abs(r[0]) < half_width * rn / radius;
+    if (!in_mouth && rn > 0)
+      d = std::min(d, std::abs(rn - radius));
+    else
+      d = std::min({d, p.distance(bl), p.distance(br)});
+    return inside(p) ? -d : d;
+  }
+
+  double
+  SlottedDisk::area() const
+  {
+    // Disk minus the part of the slot rectangle inside the disk: the
+    // rectangle above the mouth plus the circular segment below it.
+    const double R = radius, a = half_width;
+    const double h         = std::sqrt(R * R - a * a);
+    const double segment   = R * R * std::asin(a / R) - a * h;
+    const double rectangle = 2 * a * (slot_top - slot_bottom);
+    return M_PI * R * R - segment - rectangle;
+  }
+
+  double
+  SlottedDisk::perimeter() const
+  {
+    const double arc = 2 * radius * (M_PI - std::asin(half_width / radius));
+    return arc + 2 * (slot_top - slot_bottom) + 2 * half_width;
+  }
+
+  template <>
+  double
+  two_ball_volume<2>(const double r, const double d)
+  {
+    const double theta = std::acos(d / (2 * r));
+    const double lens  = 2 * (r * r * theta - (d / 2) * r * std::sin(theta));
+    return 2 * M_PI * r * r - lens;
+  }
+
+  template <>
+  double
+  two_ball_volume<3>(const double r, const double d)
+  {
+    const double h = r - d / 2;
+    return 2 * (4. / 3. * M_PI * r * r * r - M_PI * h * h * (3 * r - h) / 3);
+  }
+
+  template <>
+  double
+  two_ball_surface<2>(const double r, const double d)
+  {
+    const double theta = std::acos(d / (2 * r));
+    return 2 * (2 * M_PI - 2 * theta) * r;
+  }
+
+  template <>
+  double
+  two_ball_surface<3>(const double r, const double d)
+  {
+    const double h = r - d / 2;
+    return 2 * (4 * M_PI * r * r - 2 * M_PI * r * h);
+  }
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_initial_signed_distance(const SceneParameters &scene)
+  {
+    if (scene.geometry.shape == "particles")
+      return std::make_unique<UnionOfBalls<dim>>(scene.geometry.particles);
+    if constexpr (dim == 2)
+      {
+        const auto &g = scene.geometry;
+        return std::make_unique<SlottedDisk>(
+          Point<2>(g.slotted_disk_centre[0], g.slotted_disk_centre[1]),
+          g.slotted_disk_radius,
+          g.slot_width,
+          g.slot_depth);
+      }
+    throw std::invalid_argument("the slotted disk exists in 2D only");
+  }
+
+  template std::unique_ptr<Function<2>>
+  make_initial_signed_distance<2>(const SceneParameters &);
+  template std::unique_ptr<Function<3>>
+  make_initial_signed_distance<3>(const SceneParameters &);
+  template class UnionOfBalls<2>;
+  template class UnionOfBalls<3>;
+} // namespace levelsinter

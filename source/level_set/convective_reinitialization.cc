@@ -1,0 +1,235 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <levelsinter/level_set/convective_reinitialization.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace levelsinter
+{
+  template <int dim>
+  ConvectiveReinitialization<dim>::ConvectiveReinitialization(
+    const LevelSetFilter &filter,
+    const Settings       &settings,
+    TimerOutput          &timer)
+    : filter(filter)
+    , settings(settings)
+    , timer(timer)
+  {}
+
+  template <int dim>
+  void
+  ConvectiveReinitialization<dim>::setup_system(
+    const LevelSetField<dim> &level_set)
+  {
+    const auto           &dofs = level_set.dof_handler();
+    DynamicSparsityPattern dsp(level_set.locally_relevant());
+    DoFTools::make_sparsity_pattern(dofs, dsp, level_set.constraints(), false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               level_set.locally_owned(),
+                                               dofs.get_communicator(),
+                                               level_set.locally_relevant());
+    matrix.reinit(level_set.locally_owned(),
+                  level_set.locally_owned(),
+                  dsp,
+                  dofs.get_communicator());
+    h_min = GridTools::minimal_cell_diameter(dofs.get_triangulation()) /
+            std::sqrt(double(dim));
+  }
+
+  template <int dim>
+  void
+  ConvectiveReinitialization<dim>::assemble(
+    const LevelSetField<dim>      &level_set,
+    const VelocityField<dim>      &velocity,
+    const double                   dt,
+    TrilinosWrappers::MPI::Vector &rhs)
+  {
+    TimerOutput::Scope scope(timer, "level set: assembly");
+    matrix = 0;
+    rhs    = 0;
+
+    // lambda = h / dt with the finest h everywhere: the reinitialisation
+    // then moves alpha by at most h_min per step in every cell, and the
+    // coarse cells outside the band (where the filter should be saturated)
+    // see a Courant number h_min / h_K < 1 instead of being driven hard.
+    const double lambda = settings.reinitialization_strength * h_min / dt;
+
+    const QGauss<dim> quadrature(2);
+    FEValues<dim>     fe_values(level_set.fe(),
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    FEValues<dim>     velocity_values(velocity.fe(), quadrature, update_values);
+    const FEValuesExtractors::Vector velocities(0);
+    const QGauss<dim - 1>            face_quadrature(2);
+    FEFaceValues<dim>                face_values(level_set.fe(),
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    FEFaceValues<dim> velocity_face_values(velocity.fe(),
+                                           face_quadrature,
+                                           update_values);
+    std::vector<Tensor<1, dim>> v_face(face_quadrature.size());
+    std::vector<double>         alpha_face(face_quadrature.size());
+
+    const unsigned int n_q           = quadrature.size();
+    const unsigned int dofs_per_cell = level_set.fe().dofs_per_cell;
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    dealii::Vector<double> cell_rhs(dofs_per_cell);
+    std::vector<types::global_dof_index> indices(dofs_per_cell);
+    std::vector<double>                  alpha(n_q);
+    std::vector<Tensor<1, dim>>          grad_alpha(n_q);
+    std::vector<Tensor<1, dim>>          v(n_q);
+    std::vector<double>                  test(dofs_per_cell);
+    std::vector<double>                  advective(dofs_per_cell);
+    const double                         theta = settings.theta;
+
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator velocity_cell(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &velocity.dof_handler());
+          fe_values.reinit(cell);
+          velocity_values.reinit(velocity_cell);
+          fe_values.get_function_values(level_set.alpha(), alpha);
+          fe_values.get_function_gradients(level_set.alpha(), grad_alpha);
+          velocity_values[velocities].get_function_values(velocity.values(), v);
+
+          // Edge length of the (square) cell.
+          const double h = cell->diameter() / std::sqrt(double(dim));
+          cell_matrix         = 0;
+          cell_rhs            = 0;
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double a    = alpha[q];
+              const double norm = grad_alpha[q].norm();
+              const double eps  = h * norm;
+              const double sign =
+                (a == 0) ? 0. : a / std::sqrt(a * a + eps * eps);
+              Tensor<1, dim> w = v[q];
+              if (norm > 1e-12 * filter.saturation() / h)
+                w += lambda * sign / norm * grad_alpha[q];
+              const double source =
+                lambda * sign * filter.gradient_norm_target(a);
+              const double tau =
+                1. / std::sqrt(4. / (dt * dt) + 4. * w.norm_square() / (h * h));
+              const double old_residual_part =
+                a / dt - (1 - theta) * (w * grad_alpha[q]) + source;
+              const double JxW = fe_values.JxW(q);
+              // Isotropic diffusion nu = c (h_min / dt) |sgn| h: SUPG damps only along streamlines,
+              // and where they run diagonal to the cells the Q1
+              // checkerboard mode is (nearly) invisible to w . grad and
+              // grows. nu vanishes on the interface (sgn = 0), so it
+              // smooths the filter ramp without curvature-driven motion of
+              // alpha = 0 to first order.
+              const double nu =
+                settings.reinitialization_diffusion * (h_min / dt) *
+                std::abs(sign) * h;
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  advective[i] = w * fe_values.shape_grad(i, q);
+                  test[i]      = fe_values.shape_value(i, q) + tau * advective[i];
+                }
+              for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                {
+                  for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                    cell_matrix(i, j) +=
+                      (test[i] *
+                      (fe_values.shape_value(j, q) / dt + theta * advective[j]) +
+                      nu * fe_values.shape_grad(i,q)*fe_values.shape_grad(j,q))*
+                      JxW;
+                  cell_rhs(i) += test[i] * old_residual_part * JxW;
+                }
+            }
+
+          // Inflow boundary (w.n < 0): alpha = +saturation (atmosphere)
+          // imposed weakly by the upwind term int (w.n)^- (alpha - s) phi.
+          // Without it the Galerkin problem leaves inflow values free and
+          // they drift. Symmetry planes have w.n = 0 and get nothing.
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                face_values.reinit(cell, f);
+                velocity_face_values.reinit(velocity_cell, f);
+                velocity_face_values[velocities].get_function_values(
+                  velocity.values(), v_face);
+                face_values.get_function_values(level_set.alpha(), alpha_face);
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
+                  {
+                    const double inflow =
+                      -std::min(0., v_face[q] * face_values.normal_vector(q));
+                    if (inflow == 0)
+                      continue;
+                    const double JxW = face_values.JxW(q);
+                    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+                      {
+                        const double phi_i = face_values.shape_value(i, q);
+                        for (unsigned int j = 0; j < dofs_per_cell; ++j)
+                          cell_matrix(i, j) += theta * inflow * phi_i *
+                                               face_values.shape_value(j, q) *
+                                               JxW;
+                        cell_rhs(i) += inflow *
+                                       (filter.saturation() -
+                                        (1 - theta) * alpha_face[q]) *
+                                       phi_i * JxW;
+                      }
+                  }
+              }
+
+          cell->get_dof_indices(indices);
+          level_set.constraints().distribute_local_to_global(
+            cell_matrix, cell_rhs, indices, matrix, rhs);
+        }
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  unsigned int
+  ConvectiveReinitialization<dim>::advance(LevelSetField<dim>       &level_set,
+                                           const VelocityField<dim> &velocity,
+                                           const double              dt)
+  {
+    TrilinosWrappers::MPI::Vector rhs(level_set.locally_owned(),
+                                      level_set.dof_handler().get_communicator());
+    assemble(level_set, velocity, dt, rhs);
+
+    TimerOutput::Scope scope(timer, "level set: solve");
+    TrilinosWrappers::MPI::Vector solution(rhs);
+    solution = level_set.alpha(); // previous step as the initial guess
+    preconditioner.initialize(matrix);
+    SolverControl control(settings.max_iterations,
+                          settings.solver_tolerance * rhs.l2_norm());
+    TrilinosWrappers::SolverGMRES solver(control);
+    solver.solve(matrix, solution, rhs, preconditioner);
+
+    // The filtered function is bounded by its saturation value; the
+    // transport may overshoot it by a rounding-sized amount far from the
+    // interface, which would leave the filter's range (g undefined there).
+    const double s = filter.saturation();
+    for (const auto i : level_set.locally_owned())
+      solution[i] = std::clamp(double(solution[i]), -s, s);
+    solution.compress(VectorOperation::insert);
+    level_set.set_from_owned(solution);
+    return control.last_step();
+  }
+
+  template class ConvectiveReinitialization<2>;
+  template class ConvectiveReinitialization<3>;
+} // namespace levelsinter

@@ -1,0 +1,309 @@
+#include <deal.II/base/bounding_box.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/hp/fe_collection.h>
+
+#include <deal.II/non_matching/fe_values.h>
+#include <deal.II/non_matching/mesh_classifier.h>
+
+#include <levelsinter/level_set/interface_measures.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace levelsinter::interface_measures
+{
+  namespace
+  {
+    // Cut-cell integration of f over the solid and g over the interface.
+    template <int dim, typename VolumeIntegrand, typename SurfaceIntegrand>
+    void
+    integrate_cut(const LevelSetField<dim> &level_set,
+                  const UpdateFlags         volume_flags,
+                  const UpdateFlags         surface_flags,
+                  const VolumeIntegrand    &on_volume,
+                  const SurfaceIntegrand   &on_surface)
+    {
+      const auto &dofs = level_set.dof_handler();
+      NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
+      classifier.reclassify();
+
+      NonMatching::RegionUpdateFlags flags;
+      flags.inside  = volume_flags;
+      flags.surface = surface_flags;
+      const hp::FECollection<dim> fe_collection(level_set.fe());
+      // Three Gauss points per direction integrate the Q1 level set's
+      // implicit surface to far below its interpolation error.
+      NonMatching::FEValues<dim> cut_values(fe_collection,
+                                            QGauss<1>(3),
+                                            flags,
+                                            classifier,
+                                            dofs,
+                                            level_set.alpha());
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned() &&
+            classifier.location_to_level_set(cell) !=
+              NonMatching::LocationToLevelSet::outside)
+          {
+            cut_values.reinit(cell);
+            if (volume_flags != update_default)
+              if (const auto &inside = cut_values.get_inside_fe_values())
+                on_volume(*inside);
+            if (surface_flags != update_default)
+              if (const auto &surface = cut_values.get_surface_fe_values())
+                on_surface(*surface);
+          }
+    }
+
+    // alpha_h at a point inside a given cell.
+    template <int dim>
+    double
+    value_in_cell(const LevelSetField<dim>                             &level_set,
+                  const typename DoFHandler<dim>::active_cell_iterator &cell,
+                  const std::vector<types::global_dof_index>           &indices,
+                  const Point<dim>                                     &p)
+    {
+      const Point<dim> unit =
+        StaticMappingQ1<dim>::mapping.transform_real_to_unit_cell(cell, p);
+      double value = 0;
+      for (unsigned int i = 0; i < indices.size(); ++i)
+        value += level_set.alpha()(indices[i]) *
+                 level_set.fe().shape_value(i, unit);
+      return value;
+    }
+  } // namespace
+
+  template <int dim>
+  VolumeAndArea
+  volume_and_area(const LevelSetField<dim> &level_set)
+  {
+    VolumeAndArea result;
+    integrate_cut<dim>(
+      level_set,
+      update_JxW_values,
+      update_JxW_values,
+      [&](const FEValues<dim> &values) {
+        for (const unsigned int q : values.quadrature_point_indices())
+          result.solid_volume += values.JxW(q);
+      },
+      [&](const NonMatching::FEImmersedSurfaceValues<dim> &values) {
+        for (const unsigned int q : values.quadrature_point_indices())
+          result.interface_area += values.JxW(q);
+      });
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
+    result.solid_volume   = Utilities::MPI::sum(result.solid_volume, comm);
+    result.interface_area = Utilities::MPI::sum(result.interface_area, comm);
+    return result;
+  }
+
+  template <int dim>
+  ShapeError
+  shape_error(const LevelSetField<dim> &level_set,
+              const Function<dim>      &exact_signed_distance)
+  {
+    ShapeError result;
+    integrate_cut<dim>(
+      level_set,
+      update_default,
+      update_JxW_values | update_quadrature_points,
+      [](const FEValues<dim> &) {},
+      [&](const NonMatching::FEImmersedSurfaceValues<dim> &values) {
+        for (const unsigned int q : values.quadrature_point_indices())
+          {
+            const double d =
+              std::abs(exact_signed_distance.value(values.quadrature_point(q)));
+            result.symmetric_difference += d * values.JxW(q);
+            result.max_distance = std::max(result.max_distance, d);
+          }
+      });
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
+    result.symmetric_difference =
+      Utilities::MPI::sum(result.symmetric_difference, comm);
+    result.max_distance = Utilities::MPI::max(result.max_distance, comm);
+    return result;
+  }
+
+  template <int dim>
+  double
+  neck_radius(const LevelSetField<dim> &level_set,
+              const Point<dim>         &c1,
+              const Point<dim>         &c2)
+  {
+    const Point<dim>     middle = c1 + 0.5 * (c2 - c1);
+    const Tensor<1, dim> axis   = (c2 - c1) / (c2 - c1).norm();
+
+    // Unit directions in the mid-plane.
+    std::vector<Tensor<1, dim>> directions;
+    if constexpr (dim == 2)
+      {
+        const Tensor<1, dim> t({-axis[1], axis[0]});
+        directions = {t, -t};
+      }
+    else
+      {
+        Tensor<1, dim> helper;
+        helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
+        Tensor<1, dim> u = cross_product_3d(axis, helper);
+        u /= u.norm();
+        const Tensor<1, dim> w = cross_product_3d(axis, u);
+        for (unsigned int k = 0; k < 8; ++k)
+          directions.push_back(std::cos(k * M_PI / 4) * u +
+                               std::sin(k * M_PI / 4) * w);
+      }
+
+    constexpr double infinity = std::numeric_limits<double>::max();
+    // Per ray: first crossing from solid to pore, and from pore to solid.
+    std::vector<double> leaving(directions.size(), infinity);
+    std::vector<double> entering(directions.size(), infinity);
+
+    const auto &dofs = level_set.dof_handler();
+    std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const BoundingBox<dim> box = cell->bounding_box();
+          bool                   indices_read = false;
+          for (unsigned int r = 0; r < directions.size(); ++r)
+            {
+              // Slab test: the part [s0, s1] of the ray inside the box.
+              double s0 = 0, s1 = infinity;
+              for (unsigned int d = 0; d < dim && s0 <= s1; ++d)
+                {
+                  const double lo = box.get_boundary_points().first[d];
+                  const double hi = box.get_boundary_points().second[d];
+                  if (std::abs(directions[r][d]) < 1e-14)
+                    {
+                      if (middle[d] < lo || middle[d] > hi)
+                        s1 = -1;
+                    }
+                  else
+                    {
+                      double a = (lo - middle[d]) / directions[r][d];
+                      double b = (hi - middle[d]) / directions[r][d];
+                      if (a > b)
+                        std::swap(a, b);
+                      s0 = std::max(s0, a);
+                      s1 = std::min(s1, b);
+                    }
+                }
+              if (!(s0 <= s1))
+                continue;
+              if (!indices_read)
+                {
+                  cell->get_dof_indices(indices);
+                  indices_read = true;
+                }
+              // Along a line alpha_h is a polynomial of degree <= dim in s;
+              // 8 sub-intervals separate its roots on a cell, bisection
+              // locates each to rounding.
+              const unsigned int n_sub = 8;
+              auto               at    = [&](const double s) {
+                return value_in_cell<dim>(level_set,
+                                          cell,
+                                          indices,
+                                          middle + s * directions[r]);
+              };
+              double a_prev = at(s0);
+              for (unsigned int k = 1; k <= n_sub; ++k)
+                {
+                  const double s_lo = s0 + (s1 - s0) * (k - 1) / n_sub;
+                  const double s_hi = s0 + (s1 - s0) * k / n_sub;
+                  const double a_hi = at(s_hi);
+                  if ((a_prev < 0) != (a_hi < 0))
+                    {
+                      double lo = s_lo, hi = s_hi, f_lo = a_prev;
+                      for (unsigned int it = 0; it < 60; ++it)
+                        {
+                          const double mid   = 0.5 * (lo + hi);
+                          const double f_mid = at(mid);
+                          if ((f_mid < 0) == (f_lo < 0))
+                            {
+                              lo   = mid;
+                              f_lo = f_mid;
+                            }
+                          else
+                            hi = mid;
+                        }
+                      auto &target = (a_prev < 0) ? leaving[r] : entering[r];
+                      target       = std::min(target, 0.5 * (lo + hi));
+                    }
+                  a_prev = a_hi;
+                }
+            }
+        }
+
+    const MPI_Comm comm = dofs.get_communicator();
+    Utilities::MPI::min(leaving, comm, leaving);
+    Utilities::MPI::min(entering, comm, entering);
+    double       sum     = 0;
+    unsigned int n_valid = 0;
+    for (unsigned int r = 0; r < directions.size(); ++r)
+      {
+        if (leaving[r] == infinity && entering[r] == infinity)
+          continue; // the ray left the domain: a symmetry plane
+        ++n_valid;
+        if (leaving[r] < entering[r])
+          sum += leaving[r];
+      }
+    return n_valid ? sum / n_valid : 0.;
+  }
+
+  template <int dim>
+  GradientNormError
+  gradient_norm_error(const LevelSetField<dim> &level_set,
+                      const LevelSetFilter     &filter)
+  {
+    const QGauss<dim> quadrature(2);
+    FEValues<dim>     values(level_set.fe(),
+                         quadrature,
+                         update_values | update_gradients | update_JxW_values);
+    std::vector<double>         alpha(quadrature.size());
+    std::vector<Tensor<1, dim>> grad(quadrature.size());
+    double max_error = 0, sum_sq = 0, measure = 0;
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          values.get_function_values(level_set.alpha(), alpha);
+          values.get_function_gradients(level_set.alpha(), grad);
+          for (const unsigned int q : values.quadrature_point_indices())
+            if (std::abs(filter.distance(alpha[q])) <= 0.5 * filter.thickness())
+              {
+                const double e =
+                  grad[q].norm() - filter.gradient_norm_target(alpha[q]);
+                max_error = std::max(max_error, std::abs(e));
+                sum_sq += e * e * values.JxW(q);
+                measure += values.JxW(q);
+              }
+        }
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
+    GradientNormError result;
+    result.max_error = Utilities::MPI::max(max_error, comm);
+    sum_sq           = Utilities::MPI::sum(sum_sq, comm);
+    measure          = Utilities::MPI::sum(measure, comm);
+    result.rms_error = measure > 0 ? std::sqrt(sum_sq / measure) : 0.;
+    return result;
+  }
+
+  template VolumeAndArea
+  volume_and_area(const LevelSetField<2> &);
+  template VolumeAndArea
+  volume_and_area(const LevelSetField<3> &);
+  template ShapeError
+  shape_error(const LevelSetField<2> &, const Function<2> &);
+  template ShapeError
+  shape_error(const LevelSetField<3> &, const Function<3> &);
+  template double
+  neck_radius(const LevelSetField<2> &, const Point<2> &, const Point<2> &);
+  template double
+  neck_radius(const LevelSetField<3> &, const Point<3> &, const Point<3> &);
+  template GradientNormError
+  gradient_norm_error(const LevelSetField<2> &, const LevelSetFilter &);
+  template GradientNormError
+  gradient_norm_error(const LevelSetField<3> &, const LevelSetFilter &);
+} // namespace levelsinter::interface_measures

@@ -1,0 +1,76 @@
+#include <deal.II/distributed/solution_transfer.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+
+namespace levelsinter
+{
+  template <int dim>
+  LevelSetField<dim>::LevelSetField(
+    const parallel::distributed::Triangulation<dim> &tria)
+    : finite_element(1)
+    , dofs(tria)
+  {}
+
+  template <int dim>
+  LevelSetField<dim>::~LevelSetField() = default;
+
+  template <int dim>
+  void
+  LevelSetField<dim>::setup_dofs()
+  {
+    dofs.distribute_dofs(finite_element);
+    owned_dofs = dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, hanging_node_constraints);
+    hanging_node_constraints.close();
+    ghosted_alpha.reinit(owned_dofs,
+                         relevant_dofs,
+                         dofs.get_communicator());
+  }
+
+  template <int dim>
+  void
+  LevelSetField<dim>::interpolate(const Function<dim> &filtered_level_set)
+  {
+    Vector owned(owned_dofs, dofs.get_communicator());
+    VectorTools::interpolate(dofs, filtered_level_set, owned);
+    set_from_owned(owned);
+  }
+
+  template <int dim>
+  void
+  LevelSetField<dim>::set_from_owned(Vector &owned)
+  {
+    hanging_node_constraints.distribute(owned);
+    ghosted_alpha = owned;
+  }
+
+  template <int dim>
+  void
+  LevelSetField<dim>::prepare_for_refinement()
+  {
+    transfer = std::make_unique<
+      parallel::distributed::SolutionTransfer<dim, Vector, dim>>(dofs);
+    transfer->prepare_for_coarsening_and_refinement(ghosted_alpha);
+  }
+
+  template <int dim>
+  void
+  LevelSetField<dim>::transfer_after_refinement()
+  {
+    setup_dofs();
+    Vector owned(owned_dofs, dofs.get_communicator());
+    transfer->interpolate(owned);
+    transfer.reset();
+    set_from_owned(owned);
+  }
+
+  template class LevelSetField<2>;
+  template class LevelSetField<3>;
+} // namespace levelsinter

@@ -1,0 +1,134 @@
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/mechanisms/prescribed_velocity.h>
+
+#include <map>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    template <int dim>
+    class RigidRotation : public Function<dim>
+    {
+    public:
+      RigidRotation(const Point<dim>     &centre,
+                    const Tensor<1, 3>   &axis,
+                    const double          omega)
+        : Function<dim>(dim)
+        , centre(centre)
+        , omega_vector(omega * axis / axis.norm())
+      {}
+
+      void
+      vector_value(const Point<dim> &p, Vector<double> &v) const override
+      {
+        Tensor<1, 3> r;
+        for (unsigned int d = 0; d < dim; ++d)
+          r[d] = p[d] - centre[d];
+        // In 2D the axis is z, whatever the parameter says.
+        const Tensor<1, 3> w =
+          dim == 2 ? Tensor<1, 3>({0, 0, omega_vector.norm() *
+                                           (omega_vector[2] < 0 ? -1. : 1.)}) :
+                     omega_vector;
+        const Tensor<1, 3> u = cross_product_3d(w, r);
+        for (unsigned int d = 0; d < dim; ++d)
+          v[d] = u[d];
+      }
+
+      double
+      value(const Point<dim> &p, const unsigned int component) const override
+      {
+        Vector<double> v(dim);
+        vector_value(p, v);
+        return v[component];
+      }
+
+    private:
+      Point<dim>   centre;
+      Tensor<1, 3> omega_vector;
+    };
+
+    template <int dim>
+    Point<dim>
+    to_point(const std::vector<double> &x)
+    {
+      Point<dim> p;
+      for (unsigned int d = 0; d < dim; ++d)
+        p[d] = x[d];
+      return p;
+    }
+  } // namespace
+
+  template <int dim>
+  std::unique_ptr<Function<dim>>
+  make_prescribed_velocity(const SceneParameters::Velocity &parameters)
+  {
+    if (parameters.type == "none")
+      return std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    if (parameters.type == "constant")
+      {
+        std::vector<double> v(parameters.constant.begin(),
+                              parameters.constant.begin() + dim);
+        return std::make_unique<Functions::ConstantFunction<dim>>(v);
+      }
+    if (parameters.type == "rotation")
+      {
+        Tensor<1, 3> axis;
+        for (unsigned int d = 0; d < 3; ++d)
+          axis[d] = parameters.rotation_axis[d];
+        if (dim == 2)
+          axis = Tensor<1, 3>({0, 0, 1});
+        return std::make_unique<RigidRotation<dim>>(
+          to_point<dim>(parameters.rotation_centre),
+          axis,
+          parameters.angular_velocity);
+      }
+
+    // Expression: components separated by ';', variables x,y[,z],t.
+    std::map<std::string, double> constants;
+    for (const auto &item :
+         Utilities::split_string_list(parameters.expression_constants, ','))
+      {
+        const auto eq = item.find('=');
+        if (eq == std::string::npos)
+          throw std::runtime_error(
+            "entry 'Velocity/Expression constants': '" + item +
+            "' is not of the form NAME=VALUE");
+        constants[Utilities::trim(item.substr(0, eq))] =
+          Utilities::string_to_double(Utilities::trim(item.substr(eq + 1)));
+      }
+    constants["pi"] = M_PI;
+    auto function   = std::make_unique<FunctionParser<dim>>(dim);
+    try
+      {
+        function->initialize(FunctionParser<dim>::default_variable_names() +
+                               ",t",
+                             Utilities::split_string_list(parameters.expression,
+                                                          ';'),
+                             constants,
+                             /*time_dependent=*/true);
+        // Evaluate once so that an unknown symbol is reported now.
+        Vector<double> v(dim);
+        function->vector_value(Point<dim>(), v);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream info;
+        e.print_info(info);
+        throw std::runtime_error("entry 'Velocity/Expression': cannot parse '" +
+                                 parameters.expression + "': " +
+                                 Utilities::trim(info.str()));
+      }
+    return function;
+  }
+
+  template std::unique_ptr<Function<2>>
+  make_prescribed_velocity<2>(const SceneParameters::Velocity &);
+  template std::unique_ptr<Function<3>>
+  make_prescribed_velocity<3>(const SceneParameters::Velocity &);
+} // namespace levelsinter

@@ -1,0 +1,80 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <levelsinter/mechanisms/velocity_field.h>
+
+#include <cmath>
+
+namespace levelsinter
+{
+  template <int dim>
+  VelocityField<dim>::VelocityField(
+    const parallel::distributed::Triangulation<dim> &tria)
+    : finite_element(FE_Q<dim>(1), dim)
+    , dofs(tria)
+  {}
+
+  template <int dim>
+  void
+  VelocityField<dim>::setup_dofs()
+  {
+    dofs.distribute_dofs(finite_element);
+    owned_dofs = dofs.locally_owned_dofs();
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
+    ghosted_velocity.reinit(owned_dofs, relevant_dofs, dofs.get_communicator());
+  }
+
+  template <int dim>
+  void
+  VelocityField<dim>::interpolate(const Function<dim> &velocity)
+  {
+    Vector owned(owned_dofs, dofs.get_communicator());
+    VectorTools::interpolate(dofs, velocity, owned);
+    // Hanging nodes must follow their parents so that the field is
+    // continuous.
+    AffineConstraints<double> hanging;
+    hanging.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, hanging);
+    hanging.close();
+    hanging.distribute(owned);
+    ghosted_velocity = owned;
+  }
+
+  template <int dim>
+  double
+  VelocityField<dim>::max_norm() const
+  {
+    // Nodal values of each support point are stored component by component;
+    // walk the cells so that components of one node are combined.
+    double                               local_max = 0;
+    std::vector<types::global_dof_index> indices(finite_element.dofs_per_cell);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(indices);
+          for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
+               ++v)
+            {
+              double norm2 = 0;
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const double value = ghosted_velocity(
+                    indices[finite_element.component_to_system_index(c, v)]);
+                  norm2 += value * value;
+                }
+              local_max = std::max(local_max, norm2);
+            }
+        }
+    return std::sqrt(Utilities::MPI::max(local_max, dofs.get_communicator()));
+  }
+
+  template class VelocityField<2>;
+  template class VelocityField<3>;
+} // namespace levelsinter

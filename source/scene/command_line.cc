@@ -1,0 +1,165 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <levelsinter/scene/command_line.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    // deal.II's exceptions carry a long preamble (source file, function);
+    // users need only the part that describes their input.
+    std::string
+    describe(const ExceptionBase &e)
+    {
+      std::ostringstream out;
+      e.print_info(out);
+      std::string text = Utilities::trim(out.str());
+      // Collapse the multi-line pattern descriptions into one line each.
+      std::string result;
+      for (const char c : text)
+        result += (c == '\n' ? ' ' : c);
+      return result;
+    }
+
+    void
+    apply_override(ParameterHandler  &prm,
+                   const std::string &path,
+                   const std::string &value)
+    {
+      auto parts = Utilities::split_string_list(path, '/');
+      if (parts.empty() || parts.back().empty())
+        throw std::runtime_error("--set '" + path +
+                                 "': expected 'Section/entry=value'");
+      const std::string entry = parts.back();
+      parts.pop_back();
+      unsigned int depth = 0;
+      try
+        {
+          for (const auto &section : parts)
+            {
+              prm.enter_subsection(section);
+              ++depth;
+            }
+          prm.set(entry, value);
+        }
+      catch (const ExceptionBase &e)
+        {
+          for (; depth > 0; --depth)
+            prm.leave_subsection();
+          throw std::runtime_error("--set '" + path + "=" + value +
+                                   "': " + describe(e));
+        }
+      for (; depth > 0; --depth)
+        prm.leave_subsection();
+    }
+  } // namespace
+
+  std::string
+  CommandLine::usage()
+  {
+    return "Usage:\n"
+           "  levelsinter [--set \"Section/entry=value\"]... SCENE.prm\n"
+           "  mpirun -np N levelsinter SCENE.prm\n"
+           "  levelsinter --print-parameters   every entry with its default "
+           "and documentation\n"
+           "  levelsinter --help\n"
+           "\n"
+           "SCENE.prm is a deal.II parameter file ('set Entry = value' inside "
+           "'subsection Name ... end').\n"
+           "--set overrides one entry after the file is read; repeat it for "
+           "several, e.g.\n"
+           "  levelsinter --set \"Mesh refinement/Maximum level=7\" "
+           "scene.prm\n"
+           "Subsections are separated by '/'; a top-level entry has no '/'.\n"
+           "Outputs (fields, metrics.csv) go to Output/Directory.\n";
+  }
+
+  CommandLine
+  CommandLine::parse(int argc, char **argv)
+  {
+    CommandLine cl;
+    for (int i = 1; i < argc; ++i)
+      {
+        const std::string arg = argv[i];
+        if (arg == "--help" || arg == "-h")
+          cl.action = Action::help;
+        else if (arg == "--print-parameters")
+          cl.action = Action::print_parameters;
+        else if (arg == "--set")
+          {
+            if (i + 1 >= argc)
+              throw std::runtime_error(
+                "--set needs an argument 'Section/entry=value'");
+            const std::string assignment = argv[++i];
+            const auto        eq         = assignment.find('=');
+            if (eq == std::string::npos)
+              throw std::runtime_error("--set '" + assignment +
+                                       "': expected 'Section/entry=value'");
+            cl.overrides.emplace_back(
+              Utilities::trim(assignment.substr(0, eq)),
+              Utilities::trim(assignment.substr(eq + 1)));
+          }
+        else if (!arg.empty() && arg[0] == '-')
+          throw std::runtime_error("unknown option '" + arg +
+                                   "' (see levelsinter --help)");
+        else if (cl.scene_file.empty())
+          cl.scene_file = arg;
+        else
+          throw std::runtime_error("more than one scene file given: '" +
+                                   cl.scene_file + "' and '" + arg + "'");
+      }
+    if (cl.action == Action::run && cl.scene_file.empty())
+      throw std::runtime_error("no scene file given (see levelsinter --help)");
+    return cl;
+  }
+
+  SceneParameters
+  read_scene(const std::string &scene_file,
+             const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    ParameterHandler prm;
+    SceneParameters::declare_parameters(prm);
+
+    std::string scene_directory;
+    if (!scene_file.empty())
+      {
+        std::ifstream probe(scene_file);
+        if (!probe)
+          throw std::runtime_error("scene file '" + scene_file +
+                                   "' cannot be opened for reading");
+        const auto slash = scene_file.rfind('/');
+        scene_directory =
+          (slash == std::string::npos) ? "." : scene_file.substr(0, slash);
+        try
+          {
+            prm.parse_input(scene_file);
+          }
+        catch (const ExceptionBase &e)
+          {
+            throw std::runtime_error("scene file '" + scene_file +
+                                     "': " + describe(e));
+          }
+      }
+    for (const auto &[path, value] : overrides)
+      apply_override(prm, path, value);
+
+    SceneParameters parameters;
+    try
+      {
+        parameters.parse_parameters(prm, scene_directory);
+      }
+    catch (const std::runtime_error &e)
+      {
+        throw std::runtime_error(
+          (scene_file.empty() ? std::string("scene") :
+                                "scene file '" + scene_file + "'") +
+          ": " + e.what());
+      }
+    return parameters;
+  }
+} // namespace levelsinter

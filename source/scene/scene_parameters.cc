@@ -1,0 +1,458 @@
+#include <deal.II/base/utilities.h>
+
+#include <levelsinter/grid/particles.h>
+#include <levelsinter/scene/scene_parameters.h>
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    [[noreturn]] void
+    fail(const std::string &entry, const std::string &what)
+    {
+      throw std::runtime_error("entry '" + entry + "': " + what);
+    }
+
+    std::vector<double>
+    read_coordinates(ParameterHandler  &prm,
+                     const std::string &section,
+                     const std::string &entry,
+                     const unsigned int n)
+    {
+      const std::string text = prm.get(entry);
+      std::vector<double> values;
+      try
+        {
+          values = Utilities::string_to_double(
+            Utilities::split_string_list(text, ','));
+        }
+      catch (...)
+        {
+          fail(section + "/" + entry,
+               "'" + text + "' is not a comma-separated list of numbers");
+        }
+      if (values.size() != n)
+        fail(section + "/" + entry,
+             "needs " + std::to_string(n) + " comma-separated numbers (one per "
+             "coordinate), got '" + text + "'");
+      for (const double v : values)
+        if (!std::isfinite(v))
+          fail(section + "/" + entry, "contains a non-finite number");
+      return values;
+    }
+  } // namespace
+
+  void
+  SceneParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Dimension",
+                      "2",
+                      Patterns::Integer(2, 3),
+                      "Space dimension of the scene: 2 or 3.");
+
+    prm.enter_subsection("Domain");
+    {
+      prm.declare_entry("Lower corner",
+                        "0, 0",
+                        Patterns::Anything(),
+                        "Lower corner of the box domain, one coordinate per "
+                        "dimension, comma-separated.");
+      prm.declare_entry("Upper corner",
+                        "1, 1",
+                        Patterns::Anything(),
+                        "Upper corner of the box domain.");
+      prm.declare_entry("Subdivisions",
+                        "1, 1",
+                        Patterns::List(Patterns::Integer(1), 2, 3, ","),
+                        "Number of coarse cells along each axis (level 0 of "
+                        "the mesh). Choose them so that coarse cells are "
+                        "about cubes.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Geometry");
+    {
+      prm.declare_entry(
+        "Shape",
+        "particles",
+        Patterns::Selection("particles|slotted disk"),
+        "What the solid is at t = 0: the union of the particles, or "
+        "Zalesak's slotted disk (2D only; for the transport benchmark).");
+      prm.declare_entry(
+        "Particles",
+        "",
+        Patterns::Anything(),
+        "Inline particles 'x, y[, z], r' separated by ';', e.g. "
+        "'0.3, 0.5, 0.2; 0.7, 0.5, 0.2'. May be combined with a particle "
+        "file.");
+      prm.declare_entry(
+        "Particle file",
+        "",
+        Patterns::Anything(),
+        "CSV file of particles: a header line, then one particle per line "
+        "'x,y,r' (2D) or 'x,y,z,r' (3D). Relative paths are relative to the "
+        "scene file. Lines starting with '#' are ignored.");
+      prm.declare_entry("Slotted disk centre",
+                        "0.5, 0.75",
+                        Patterns::Anything(),
+                        "Centre of Zalesak's disk.");
+      prm.declare_entry("Slotted disk radius",
+                        "0.15",
+                        Patterns::Double(0),
+                        "Radius of Zalesak's disk.");
+      prm.declare_entry("Slot width",
+                        "0.05",
+                        Patterns::Double(0),
+                        "Width of the slot, centred on the disk's vertical "
+                        "axis.");
+      prm.declare_entry("Slot depth",
+                        "0.25",
+                        Patterns::Double(0),
+                        "Depth of the slot, measured from the bottom of the "
+                        "disk upward.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Level set");
+    {
+      prm.declare_entry("Filter",
+                        "sine",
+                        Patterns::Selection("sine|tanh"),
+                        "Filter of the signed distance: 'sine' (paper Eq. 65, "
+                        "saturates at 2E/pi) or 'tanh' (Eq. 69, E tanh(d/E)).");
+      prm.declare_entry(
+        "Filter thickness",
+        "0.05",
+        Patterns::Double(0),
+        "Thickness E of the filter (a length). Must be at least the "
+        "refinement band width so that the band can be located from alpha.");
+      prm.declare_entry("Theta",
+                        "0.5",
+                        Patterns::Double(0.5, 1),
+                        "Time discretisation of the transport term: 0.5 "
+                        "Crank-Nicolson, 1 backward Euler.");
+      prm.declare_entry(
+        "Reinitialization strength",
+        "0.25",
+        Patterns::Double(0),
+        "lambda dt / h_min in Eq. 68: how far the reinitialisation moves "
+        "alpha per step in units of the finest cell. The paper uses 1; 0.25 "
+        "conserves volume better and is stable (doc/numerics.md); 0 turns "
+        "reinitialisation off (pure transport).");
+      prm.declare_entry(
+        "Reinitialization diffusion",
+        "0.02",
+        Patterns::Double(0, 1),
+        "c in the diffusion nu = c (h_min / dt) |sgn(alpha)| h added to the "
+        "reinitialisation. It vanishes on the interface; without it the "
+        "scheme grows grid-scale wiggles where the interface is diagonal to "
+        "the cells (doc/numerics.md).");
+      prm.declare_entry("Solver tolerance",
+                        "1e-10",
+                        Patterns::Double(0, 1),
+                        "Relative residual reduction of the GMRES solve of "
+                        "each transport step.");
+      prm.declare_entry("Maximum solver iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "GMRES iterations allowed per transport step.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    {
+      prm.declare_entry("Minimum level",
+                        "0",
+                        Patterns::Integer(0, 20),
+                        "Refinement level far from the interface (0 = the "
+                        "coarse subdivision).");
+      prm.declare_entry("Maximum level",
+                        "4",
+                        Patterns::Integer(0, 20),
+                        "Refinement level inside the interface band.");
+      prm.declare_entry(
+        "Band width",
+        "0.05",
+        Patterns::Double(0),
+        "Cells closer than this distance to the interface are refined to the "
+        "maximum level. It must cover the interface motion between two "
+        "adaptations: band width >= (adapt interval * CFL + 2) * h_min.");
+      prm.declare_entry("Adapt interval",
+                        "5",
+                        Patterns::Integer(1),
+                        "Re-adapt the mesh every this many steps.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time");
+    {
+      prm.declare_entry("End time",
+                        "1",
+                        Patterns::Double(0),
+                        "Simulated time at which the run stops.");
+      prm.declare_entry("Time step",
+                        "0",
+                        Patterns::Double(0),
+                        "Fixed time step; 0 lets the CFL number choose it. "
+                        "When both are given the smaller step is used.");
+      prm.declare_entry("CFL number",
+                        "0.5",
+                        Patterns::Double(0),
+                        "Courant number max|v| dt / h_min; 0 disables the "
+                        "CFL limit (then 'Time step' must be set).");
+      prm.declare_entry("Maximum steps",
+                        "0",
+                        Patterns::Integer(0),
+                        "Stop after this many steps (0 = no limit).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Velocity");
+    {
+      prm.declare_entry("Type",
+                        "none",
+                        Patterns::Selection(
+                          "none|constant|rotation|expression"),
+                        "Prescribed velocity that transports the level set.");
+      prm.declare_entry("Constant",
+                        "0, 0",
+                        Patterns::Anything(),
+                        "Velocity vector for Type = constant.");
+      prm.declare_entry("Rotation centre",
+                        "0.5, 0.5",
+                        Patterns::Anything(),
+                        "A point on the rotation axis (Type = rotation).");
+      prm.declare_entry("Rotation axis",
+                        "0, 0, 1",
+                        Patterns::Anything(),
+                        "Rotation axis in 3D (normalised internally); "
+                        "ignored in 2D.");
+      prm.declare_entry("Angular velocity",
+                        "6.283185307179586",
+                        Patterns::Double(),
+                        "Angular velocity in radians per unit time, "
+                        "counter-clockwise about the axis.");
+      prm.declare_entry("Expression",
+                        "0; 0",
+                        Patterns::Anything(),
+                        "Velocity components separated by ';' as functions "
+                        "of x, y[, z] and t (deal.II FunctionParser syntax).");
+      prm.declare_entry("Expression constants",
+                        "",
+                        Patterns::Anything(),
+                        "Constants for the expression, e.g. 'U=1, T=2'.");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Directory for fields and metrics.csv; created if "
+                        "missing. Relative paths are relative to the current "
+                        "working directory.");
+      prm.declare_entry("Field interval",
+                        "10",
+                        Patterns::Integer(0),
+                        "Write fields every this many steps (0 = first and "
+                        "last step only).");
+      prm.declare_entry("Field formats",
+                        "vtu, xdmf",
+                        Patterns::MultipleSelection("vtu|xdmf|none"),
+                        "vtu: PVD/PVTU/VTU series; xdmf: XDMF + HDF5; none.");
+      prm.declare_entry("Metrics interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Append a row to metrics.csv every this many steps "
+                        "(the first and last step are always written).");
+      prm.declare_entry("Progress interval",
+                        "10",
+                        Patterns::Integer(0),
+                        "Print a progress line every this many steps (0 = "
+                        "never).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  SceneParameters::parse_parameters(ParameterHandler  &prm,
+                                    const std::string &scene_directory)
+  {
+    dimension          = prm.get_integer("Dimension");
+    const unsigned int d = dimension;
+
+    prm.enter_subsection("Domain");
+    domain.lower_corner = read_coordinates(prm, "Domain", "Lower corner", d);
+    domain.upper_corner = read_coordinates(prm, "Domain", "Upper corner", d);
+    {
+      const auto values = Utilities::string_to_int(
+        Utilities::split_string_list(prm.get("Subdivisions"), ','));
+      if (values.size() != d)
+        fail("Domain/Subdivisions",
+             "needs " + std::to_string(d) + " integers, got '" +
+               prm.get("Subdivisions") + "'");
+      domain.subdivisions.assign(values.begin(), values.end());
+    }
+    for (unsigned int i = 0; i < d; ++i)
+      if (!(domain.lower_corner[i] < domain.upper_corner[i]))
+        fail("Domain/Upper corner",
+             "each coordinate must be larger than the lower corner's");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Geometry");
+    geometry.shape = prm.get("Shape");
+    geometry.particles =
+      parse_inline_particles(prm.get("Particles"), d, "Geometry/Particles");
+    geometry.particle_file = prm.get("Particle file");
+    if (!geometry.particle_file.empty())
+      {
+        if (geometry.particle_file.front() != '/' && !scene_directory.empty())
+          geometry.particle_file =
+            scene_directory + "/" + geometry.particle_file;
+        const auto from_file = read_particle_file(geometry.particle_file, d);
+        geometry.particles.insert(geometry.particles.end(),
+                                  from_file.begin(),
+                                  from_file.end());
+      }
+    geometry.slotted_disk_centre =
+      read_coordinates(prm, "Geometry", "Slotted disk centre", 2);
+    geometry.slotted_disk_radius = prm.get_double("Slotted disk radius");
+    geometry.slot_width          = prm.get_double("Slot width");
+    geometry.slot_depth          = prm.get_double("Slot depth");
+    if (geometry.shape == "particles")
+      {
+        if (geometry.particles.empty())
+          fail("Geometry/Particles",
+               "the scene has no particle: give 'Particles' or 'Particle "
+               "file'");
+        check_particles_in_domain(geometry.particles,
+                                  domain.lower_corner,
+                                  domain.upper_corner);
+      }
+    else
+      {
+        if (d != 2)
+          fail("Geometry/Shape", "'slotted disk' exists in 2D only");
+        if (geometry.slot_width >= 2 * geometry.slotted_disk_radius ||
+            geometry.slot_depth >= 2 * geometry.slotted_disk_radius)
+          fail("Geometry/Slot width",
+               "slot width and depth must be smaller than the disk diameter");
+        check_particles_in_domain({{geometry.slotted_disk_centre[0],
+                                    geometry.slotted_disk_centre[1],
+                                    geometry.slotted_disk_radius}},
+                                  domain.lower_corner,
+                                  domain.upper_corner);
+      }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Level set");
+    level_set.filter           = prm.get("Filter");
+    level_set.filter_thickness = prm.get_double("Filter thickness");
+    level_set.theta            = prm.get_double("Theta");
+    level_set.solver_tolerance = prm.get_double("Solver tolerance");
+    level_set.max_iterations   = prm.get_integer("Maximum solver iterations");
+    level_set.reinitialization_strength =
+      prm.get_double("Reinitialization strength");
+    level_set.reinitialization_diffusion =
+      prm.get_double("Reinitialization diffusion");
+    if (level_set.filter_thickness <= 0)
+      fail("Level set/Filter thickness", "must be positive");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Mesh refinement");
+    refinement.min_level      = prm.get_integer("Minimum level");
+    refinement.max_level      = prm.get_integer("Maximum level");
+    refinement.band_width     = prm.get_double("Band width");
+    refinement.adapt_interval = prm.get_integer("Adapt interval");
+    if (refinement.max_level < refinement.min_level)
+      fail("Mesh refinement/Maximum level",
+           "must be at least the minimum level (" +
+             std::to_string(refinement.min_level) + ")");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Time");
+    time.end_time  = prm.get_double("End time");
+    time.time_step = prm.get_double("Time step");
+    time.cfl       = prm.get_double("CFL number");
+    time.max_steps = prm.get_integer("Maximum steps");
+    if (time.time_step == 0 && time.cfl == 0)
+      fail("Time/CFL number",
+           "a CFL number or a fixed 'Time step' must be given (both are 0)");
+    prm.leave_subsection();
+
+    prm.enter_subsection("Velocity");
+    velocity.type = prm.get("Type");
+    velocity.constant = read_coordinates(prm, "Velocity", "Constant", d);
+    velocity.rotation_centre =
+      read_coordinates(prm, "Velocity", "Rotation centre", d);
+    velocity.rotation_axis =
+      read_coordinates(prm, "Velocity", "Rotation axis", 3);
+    velocity.angular_velocity     = prm.get_double("Angular velocity");
+    velocity.expression           = prm.get("Expression");
+    velocity.expression_constants = prm.get("Expression constants");
+    if (velocity.type == "expression" &&
+        Utilities::split_string_list(velocity.expression, ';').size() != d)
+      fail("Velocity/Expression",
+           "needs " + std::to_string(d) + " components separated by ';'");
+    if (velocity.type == "rotation" && d == 3 &&
+        std::hypot(velocity.rotation_axis[0],
+                   velocity.rotation_axis[1],
+                   velocity.rotation_axis[2]) == 0)
+      fail("Velocity/Rotation axis", "must not be the zero vector");
+    if (velocity.type == "none" && time.time_step == 0)
+      {
+        prm.leave_subsection();
+        fail("Time/Time step",
+             "with Velocity/Type = none the CFL number cannot choose a step: "
+             "set a positive 'Time step'");
+      }
+    prm.leave_subsection();
+
+    // Checks across sections. The band is located by reading distances back
+    // through the filter, which saturates at E; and between two adaptations
+    // the interface moves up to adapt_interval * CFL finest cells, which the
+    // band must still hold (plus one cell for the cut cell itself).
+    if (refinement.band_width > level_set.filter_thickness)
+      fail("Mesh refinement/Band width",
+           "must not exceed Level set/Filter thickness (" +
+             std::to_string(level_set.filter_thickness) +
+             "): beyond E the filtered level set carries no distance");
+    {
+      double h_coarse = 0;
+      for (unsigned int i = 0; i < d; ++i)
+        h_coarse = std::max(h_coarse,
+                            (domain.upper_corner[i] - domain.lower_corner[i]) /
+                              domain.subdivisions[i]);
+      const double h_min = h_coarse / std::pow(2.0, refinement.max_level);
+      const double needed =
+        (refinement.adapt_interval * time.cfl + 1) * h_min;
+      if (time.cfl > 0 && refinement.band_width < needed)
+        fail("Mesh refinement/Band width",
+             "is " + std::to_string(refinement.band_width) +
+               " but must be at least (adapt interval * CFL + 1) * h_min = " +
+               std::to_string(needed) +
+               " so that the interface cannot leave the refined band "
+               "between two adaptations");
+    }
+
+    prm.enter_subsection("Output");
+    output.directory         = prm.get("Directory");
+    output.field_interval    = prm.get_integer("Field interval");
+    const std::string formats = prm.get("Field formats");
+    output.write_vtu  = formats.find("vtu") != std::string::npos;
+    output.write_xdmf = formats.find("xdmf") != std::string::npos;
+    if (formats.find("none") != std::string::npos &&
+        (output.write_vtu || output.write_xdmf))
+      fail("Output/Field formats", "'none' cannot be combined with a format");
+    output.metrics_interval  = prm.get_integer("Metrics interval");
+    output.progress_interval = prm.get_integer("Progress interval");
+    if (output.directory.empty())
+      fail("Output/Directory", "must not be empty");
+    prm.leave_subsection();
+  }
+} // namespace levelsinter

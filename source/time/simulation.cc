@@ -1,0 +1,295 @@
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <deal.II/grid/grid_tools.h>
+
+#include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/mechanisms/prescribed_velocity.h>
+#include <levelsinter/time/simulation.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    std::string
+    format_seconds(const double s)
+    {
+      std::ostringstream out;
+      if (s < 120)
+        out << std::fixed << std::setprecision(1) << s << " s";
+      else if (s < 7200)
+        out << std::fixed << std::setprecision(1) << s / 60 << " min";
+      else
+        out << std::fixed << std::setprecision(1) << s / 3600 << " h";
+      return out.str();
+    }
+  } // namespace
+
+  template <int dim>
+  Simulation<dim>::Simulation(const SceneParameters &scene,
+                              const MPI_Comm         comm,
+                              std::ostream          &progress_stream)
+    : scene(scene)
+    , comm(comm)
+    , pcout(progress_stream, Utilities::MPI::this_mpi_process(comm) == 0)
+    , timer_output(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    , tria(comm,
+           Triangulation<dim>::limit_level_difference_at_vertices)
+    , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
+    , alpha(tria)
+    , velocity(tria)
+    , prescribed_velocity(make_prescribed_velocity<dim>(scene.velocity))
+    , initial_distance(make_initial_signed_distance<dim>(scene))
+    , band_refinement(scene.refinement, level_set_filter)
+    , transport(level_set_filter,
+                {scene.level_set.theta,
+                 scene.level_set.solver_tolerance,
+                 scene.level_set.max_iterations,
+                 scene.level_set.reinitialization_strength,
+                 scene.level_set.reinitialization_diffusion},
+                timer_output)
+    , field_output(scene.output.directory,
+                   scene.output.write_vtu,
+                   scene.output.write_xdmf)
+    , h_min(0)
+  {
+    if (scene.dimension != dim)
+      throw std::logic_error("Simulation<dim> built for the wrong dimension");
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::refine_initial_mesh()
+  {
+    TimerOutput::Scope scope(timer_output, "mesh adaptation");
+    make_box_mesh(tria, scene.domain);
+    if (scene.refinement.min_level > 0)
+      tria.refine_global(scene.refinement.min_level);
+    const ScalarFunctionFromFunctionObject<dim> filtered(
+      [this](const Point<dim> &p) {
+        return level_set_filter.filter(initial_distance->value(p));
+      });
+    // Each pass refines the band by one level; the exact initial shape is
+    // interpolated again on every new mesh rather than transferred.
+    for (unsigned int pass = 0;; ++pass)
+      {
+        alpha.setup_dofs();
+        alpha.interpolate(filtered);
+        if (pass > scene.refinement.max_level - scene.refinement.min_level ||
+            !band_refinement.mark_cells(tria, alpha))
+          break;
+        tria.execute_coarsening_and_refinement();
+      }
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::initialise()
+  {
+    refine_initial_mesh();
+    velocity.setup_dofs();
+    transport.setup_system(alpha);
+    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    initialised = true;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::adapt_mesh()
+  {
+    TimerOutput::Scope scope(timer_output, "mesh adaptation");
+    if (!band_refinement.mark_cells(tria, alpha))
+      return;
+    alpha.prepare_for_refinement();
+    tria.execute_coarsening_and_refinement();
+    alpha.transfer_after_refinement();
+    velocity.setup_dofs();
+    transport.setup_system(alpha);
+  }
+
+  template <int dim>
+  double
+  Simulation<dim>::choose_time_step(const double t) const
+  {
+    double dt = std::numeric_limits<double>::max();
+    if (scene.time.time_step > 0)
+      dt = scene.time.time_step;
+    const double v_max = velocity.max_norm();
+    if (scene.time.cfl > 0 && v_max > 0)
+      dt = std::min(dt, scene.time.cfl * h_min / v_max);
+    if (dt == std::numeric_limits<double>::max())
+      throw std::runtime_error(
+        "the velocity is zero everywhere at t = " + std::to_string(t) +
+        ", so the CFL number cannot choose a time step: set Time/Time step");
+    // Spread the remaining time evenly so that the run ends exactly at the
+    // end time without a sliver of a last step.
+    const double remaining = scene.time.end_time - t;
+    const double n_steps   = std::ceil(remaining / dt - 1e-9);
+    return remaining / std::max(1.0, n_steps);
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::record(const unsigned int step,
+                          const double       t,
+                          const double       dt,
+                          const bool         final_step)
+  {
+    const unsigned int cells = tria.n_global_active_cells();
+    const unsigned int dofs  = alpha.dof_handler().n_dofs();
+    summary.max_cells        = std::max(summary.max_cells, cells);
+    summary.max_dofs         = std::max(summary.max_dofs, dofs);
+    const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+
+    if (step == 0 || final_step || step % scene.output.metrics_interval == 0)
+      {
+        TimerOutput::Scope scope(timer_output, "metrics");
+        const auto measures = interface_measures::volume_and_area(alpha);
+        if (step == 0)
+          summary.initial_solid_volume = measures.solid_volume;
+        std::vector<double> row = {double(step),
+                                   t,
+                                   dt,
+                                   double(cells),
+                                   double(dofs),
+                                   measures.solid_volume,
+                                   (measures.solid_volume -
+                                    summary.initial_solid_volume) /
+                                     summary.initial_solid_volume,
+                                   measures.interface_area,
+                                   velocity.max_norm(),
+                                   double(last_iterations),
+                                   wall};
+        const auto &particles = scene.geometry.particles;
+        if (scene.geometry.shape == "particles" && particles.size() == 2)
+          {
+            Point<dim> c1, c2;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                c1[d] = particles[0][d];
+                c2[d] = particles[1][d];
+              }
+            row.push_back(interface_measures::neck_radius(alpha, c1, c2));
+          }
+        if (!metrics)
+          {
+            std::vector<std::string> columns = {"step",
+                                                "time",
+                                                "dt",
+                                                "cells",
+                                                "dofs",
+                                                "solid_volume",
+                                                "volume_change",
+                                                "interface_area",
+                                                "max_velocity",
+                                                "transport_iterations",
+                                                "wall_time"};
+            if (row.size() > columns.size())
+              columns.push_back("neck_radius");
+            metrics = std::make_unique<MetricsLog>(scene.output.directory +
+                                                     "/metrics.csv",
+                                                   columns,
+                                                   comm);
+          }
+        metrics->add_row(row);
+      }
+
+    if (step == 0 || final_step ||
+        (scene.output.field_interval > 0 &&
+         step % scene.output.field_interval == 0))
+      {
+        TimerOutput::Scope scope(timer_output, "output");
+        field_output.write(step, t, alpha, velocity);
+      }
+
+    if ((scene.output.progress_interval > 0 &&
+         step % scene.output.progress_interval == 0) ||
+        final_step)
+      {
+        const double fraction = t / scene.time.end_time;
+        const double eta =
+          fraction > 0 ? wall * (1 - fraction) / fraction : 0.;
+        pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
+              << std::setprecision(5) << t << " / " << scene.time.end_time
+              << "  dt = " << std::setw(10) << std::setprecision(3) << dt
+              << "  cells " << std::setw(8) << cells << "  dofs "
+              << std::setw(8) << dofs << "  GMRES " << std::setw(3)
+              << last_iterations << "  wall " << format_seconds(wall)
+              << "  ETA " << format_seconds(eta) << std::endl;
+      }
+  }
+
+  template <int dim>
+  typename Simulation<dim>::Summary
+  Simulation<dim>::run()
+  {
+    start = std::chrono::steady_clock::now();
+    if (!initialised)
+      initialise();
+
+    pcout << "levelsinter: " << dim << "D scene, "
+          << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), "
+          << tria.n_global_active_cells() << " cells, "
+          << alpha.dof_handler().n_dofs() << " level-set DoFs, h_min = "
+          << h_min << std::endl;
+
+    double       t    = 0;
+    unsigned int step = 0;
+    prescribed_velocity->set_time(t);
+    velocity.interpolate(*prescribed_velocity);
+    record(step, t, 0, scene.time.end_time == 0);
+
+    const double end_time = scene.time.end_time;
+    while (t < end_time * (1 - 1e-12) &&
+           (scene.time.max_steps == 0 || step < scene.time.max_steps))
+      {
+        // 1. Interface velocity: prescribed, at the start for the CFL limit
+        //    and at t + theta dt for the theta scheme.
+        const double dt = choose_time_step(t);
+        prescribed_velocity->set_time(t + scene.level_set.theta * dt);
+        velocity.interpolate(*prescribed_velocity);
+
+        // 2. Transport with convective reinitialisation (Eq. 68).
+        last_iterations = transport.advance(alpha, velocity, dt);
+        total_iterations += last_iterations;
+        if (!std::isfinite(alpha.alpha().l2_norm()))
+          throw std::runtime_error(
+            "the level set became non-finite at step " +
+            std::to_string(step + 1) + " (t = " + std::to_string(t + dt) +
+            "); reduce the CFL number or the time step");
+        t += dt;
+        ++step;
+
+        // 3. Keep the refined band on the interface.
+        if (step % scene.refinement.adapt_interval == 0)
+          adapt_mesh();
+
+        // 4. Metrics, fields, progress.
+        prescribed_velocity->set_time(t);
+        velocity.interpolate(*prescribed_velocity);
+        const bool final_step =
+          !(t < end_time * (1 - 1e-12)) ||
+          (scene.time.max_steps > 0 && step >= scene.time.max_steps);
+        record(step, t, dt, final_step);
+      }
+
+    summary.steps = step;
+    summary.time  = t;
+    summary.wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
+    summary.mean_iterations = step > 0 ? double(total_iterations) / step : 0;
+    return summary;
+  }
+
+  template class Simulation<2>;
+  template class Simulation<3>;
+} // namespace levelsinter
