@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace levelsinter
 {
@@ -218,6 +219,10 @@ namespace levelsinter
                           settings.solver_tolerance * rhs.l2_norm());
     TrilinosWrappers::SolverGMRES solver(control);
     solver.solve(matrix, solution, rhs, preconditioner);
+    if (!std::isfinite(solution.l2_norm()))
+      throw std::runtime_error(
+        "the level set became non-finite in the transport step; reduce the "
+        "CFL number or the time step");
 
     // The filtered function is bounded by its saturation value; the
     // transport may overshoot it by a rounding-sized amount far from the

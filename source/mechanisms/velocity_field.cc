@@ -51,12 +51,41 @@ namespace levelsinter
   double
   VelocityField<dim>::max_norm() const
   {
+    return max_norm_over_cells([](const auto &) { return true; });
+  }
+
+  template <int dim>
+  template <typename LevelSetVector>
+  double
+  VelocityField<dim>::max_norm_near_interface(
+    const DoFHandler<dim> &level_set_dofs,
+    const LevelSetVector  &alpha,
+    const double           saturation) const
+  {
+    std::vector<types::global_dof_index> indices(
+      level_set_dofs.get_fe().dofs_per_cell);
+    return max_norm_over_cells([&](const auto &cell) {
+      const typename DoFHandler<dim>::active_cell_iterator ls_cell(
+        &dofs.get_triangulation(), cell->level(), cell->index(), &level_set_dofs);
+      ls_cell->get_dof_indices(indices);
+      for (const auto i : indices)
+        if (std::abs(alpha(i)) < saturation)
+          return true;
+      return false;
+    });
+  }
+
+  template <int dim>
+  template <typename CellFilter>
+  double
+  VelocityField<dim>::max_norm_over_cells(const CellFilter &use_cell) const
+  {
     // Nodal values of each support point are stored component by component;
     // walk the cells so that components of one node are combined.
     double                               local_max = 0;
     std::vector<types::global_dof_index> indices(finite_element.dofs_per_cell);
     for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() && use_cell(cell))
         {
           cell->get_dof_indices(indices);
           for (unsigned int v = 0; v < GeometryInfo<dim>::vertices_per_cell;
@@ -77,4 +106,14 @@ namespace levelsinter
 
   template class VelocityField<2>;
   template class VelocityField<3>;
+  template double
+  VelocityField<2>::max_norm_near_interface(
+    const DoFHandler<2> &,
+    const TrilinosWrappers::MPI::Vector &,
+    const double) const;
+  template double
+  VelocityField<3>::max_norm_near_interface(
+    const DoFHandler<3> &,
+    const TrilinosWrappers::MPI::Vector &,
+    const double) const;
 } // namespace levelsinter

@@ -319,8 +319,9 @@ namespace levelsinter
                                   from_file.begin(),
                                   from_file.end());
       }
-    geometry.slotted_disk_centre =
-      read_coordinates(prm, "Geometry", "Slotted disk centre", 2);
+    if (geometry.shape == "slotted disk")
+      geometry.slotted_disk_centre =
+        read_coordinates(prm, "Geometry", "Slotted disk centre", 2);
     geometry.slotted_disk_radius = prm.get_double("Slotted disk radius");
     geometry.slot_width          = prm.get_double("Slot width");
     geometry.slot_depth          = prm.get_double("Slot depth");
@@ -387,11 +388,17 @@ namespace levelsinter
 
     prm.enter_subsection("Velocity");
     velocity.type = prm.get("Type");
-    velocity.constant = read_coordinates(prm, "Velocity", "Constant", d);
-    velocity.rotation_centre =
-      read_coordinates(prm, "Velocity", "Rotation centre", d);
-    velocity.rotation_axis =
-      read_coordinates(prm, "Velocity", "Rotation axis", 3);
+    // Vectors are read only where the chosen type uses them, so that the
+    // 2D defaults do not get in the way of a 3D scene.
+    if (velocity.type == "constant")
+      velocity.constant = read_coordinates(prm, "Velocity", "Constant", d);
+    if (velocity.type == "rotation")
+      {
+        velocity.rotation_centre =
+          read_coordinates(prm, "Velocity", "Rotation centre", d);
+        velocity.rotation_axis =
+          read_coordinates(prm, "Velocity", "Rotation axis", 3);
+      }
     velocity.angular_velocity     = prm.get_double("Angular velocity");
     velocity.expression           = prm.get("Expression");
     velocity.expression_constants = prm.get("Expression constants");

@@ -39,6 +39,17 @@ namespace levelsinter
     double
     max_norm() const;
 
+    /**
+     * max of |v| over the nodes of cells where |alpha| is below
+     * @p saturation, i.e. near the interface: the speed that limits the
+     * time step (far away alpha is constant and any speed is harmless).
+     */
+    template <typename LevelSetVector>
+    double
+    max_norm_near_interface(const DoFHandler<dim> &level_set_dofs,
+                            const LevelSetVector  &alpha,
+                            const double           saturation) const;
+
     const DoFHandler<dim> &
     dof_handler() const
     {
@@ -58,6 +69,10 @@ namespace levelsinter
     }
 
   private:
+    template <typename CellFilter>
+    double
+    max_norm_over_cells(const CellFilter &use_cell) const;
+
     FESystem<dim>   finite_element;
     DoFHandler<dim> dofs;
     IndexSet        owned_dofs;

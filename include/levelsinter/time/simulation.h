@@ -53,6 +53,14 @@ namespace levelsinter
     Summary
     run();
 
+    /**
+     * Replace alpha on the current mesh by the interpolant of a (filtered)
+     * level set, e.g. a distorted one to test reinitialisation. Call after
+     * initialise() and before run().
+     */
+    void
+    set_level_set(const Function<dim> &filtered_level_set);
+
     const LevelSetField<dim> &
     level_set() const
     {

@@ -1,0 +1,360 @@
+// Convergence studies of the level-set foundation, shared by the CI tests
+// (small resolutions) and the long validation runs (doc/validation.md):
+//
+//   levelsinter_validation measures DIM LEVELS [options]
+//   levelsinter_validation transport SCENE.prm LEVELS [options]
+//   levelsinter_validation reinit LEVELS [options]
+//
+// LEVELS is a comma-separated list of maximum refinement levels. Each case
+// prints a table, optionally writes it as CSV (--csv FILE), and checks the
+// finest resolution and the observed order against the limits given
+// (--max-volume-error, --max-shape-error, --min-order, ...). Exit code 0 only
+// if every check passes.
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/scene/command_line.h>
+#include <levelsinter/time/simulation.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <map>
+#include <sstream>
+
+using namespace levelsinter;
+
+namespace
+{
+  struct Options
+  {
+    std::vector<unsigned int>     levels;
+    std::map<std::string, double> limits; // --max-volume-error 1e-3 ...
+    std::string                   csv;
+  };
+
+  Options
+  parse_options(const std::vector<std::string> &args, const unsigned int first)
+  {
+    Options o;
+    for (const auto v : Utilities::string_to_int(
+           Utilities::split_string_list(args.at(first), ',')))
+      o.levels.push_back(v);
+    for (unsigned int i = first + 1; i + 1 < args.size(); i += 2)
+      {
+        if (args[i] == "--csv")
+          o.csv = args[i + 1];
+        else if (args[i].rfind("--", 0) == 0)
+          o.limits[args[i].substr(2)] = std::stod(args[i + 1]);
+        else
+          throw std::runtime_error("unexpected argument " + args[i]);
+      }
+    return o;
+  }
+
+  // A table whose rows are written to stdout and, optionally, to CSV.
+  class Table
+  {
+  public:
+    Table(const std::vector<std::string> &columns, const std::string &csv)
+      : columns(columns)
+      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      if (root && !csv.empty())
+        {
+          file.open(csv);
+          for (unsigned int i = 0; i < columns.size(); ++i)
+            file << (i ? "," : "") << columns[i];
+          file << "\n";
+        }
+      if (root)
+        {
+          for (const auto &c : columns)
+            std::cout << std::setw(14) << c;
+          std::cout << "\n";
+        }
+    }
+
+    void
+    add(const std::vector<double> &row)
+    {
+      rows.push_back(row);
+      if (!root)
+        return;
+      for (unsigned int i = 0; i < row.size(); ++i)
+        {
+          std::cout << std::setw(14) << std::setprecision(5) << row[i];
+          if (file.is_open())
+            file << (i ? "," : "") << std::setprecision(10) << row[i];
+        }
+      std::cout << "\n";
+      if (file.is_open())
+        file << "\n";
+    }
+
+    // Observed order between consecutive rows of column `c` (h halves).
+    double
+    order(const std::string &c) const
+    {
+      const unsigned int k = index(c);
+      const auto        &a = rows[rows.size() - 2];
+      const auto        &b = rows.back();
+      return std::log(a[k] / b[k]) / std::log(a[index("h")] / b[index("h")]);
+    }
+
+    double
+    finest(const std::string &c) const
+    {
+      return rows.back()[index(c)];
+    }
+
+  private:
+    unsigned int
+    index(const std::string &c) const
+    {
+      return std::find(columns.begin(), columns.end(), c) - columns.begin();
+    }
+
+    std::vector<std::string>         columns;
+    std::vector<std::vector<double>> rows;
+    std::ofstream                    file;
+    bool                             root;
+  };
+
+  // Compare a measured value with a limit, print the verdict, count failures.
+  unsigned int failures = 0;
+  void
+  check(const std::string &what,
+        const double       value,
+        const Options     &options,
+        const std::string &limit_name,
+        const bool         is_upper_bound)
+  {
+    const auto it = options.limits.find(limit_name);
+    if (it == options.limits.end())
+      return;
+    const bool ok =
+      is_upper_bound ? (value <= it->second) : (value >= it->second);
+    if (!ok)
+      ++failures;
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cout << (ok ? "PASS " : "FAIL ") << what << " = " << value
+                << (is_upper_bound ? " <= " : " >= ") << it->second << "\n";
+  }
+
+  // Resolution-dependent settings: filter, band and step scale with the
+  // finest cell so that every level sees the same discrete problem.
+  std::vector<std::pair<std::string, std::string>>
+  resolution_overrides(const SceneParameters &base, const unsigned int level)
+  {
+    const double h = (base.domain.upper_corner[0] - base.domain.lower_corner[0]) /
+                     base.domain.subdivisions[0] / std::pow(2.0, level);
+    // Each run writes its metrics to its own directory below the working
+    // directory.
+    const std::string output = "validation_output/" +
+                               std::to_string(base.dimension) + "d_level" +
+                               std::to_string(level);
+    std::filesystem::create_directories(output);
+    return {{"Output/Directory", output},
+            {"Mesh refinement/Maximum level", std::to_string(level)},
+            {"Mesh refinement/Minimum level", std::to_string(level > 4 ? level - 4 : 0)},
+            {"Mesh refinement/Band width", std::to_string(4 * h)},
+            {"Mesh refinement/Adapt interval", "2"},
+            {"Level set/Filter thickness", std::to_string(6 * h)}};
+  }
+
+  template <int dim>
+  void
+  exact_measures(const SceneParameters &scene, double &volume, double &area)
+  {
+    if (scene.geometry.shape == "slotted disk")
+      {
+        const auto *disk = dynamic_cast<const SlottedDisk *>(
+          make_initial_signed_distance<2>(scene).get());
+        SlottedDisk copy = *disk;
+        volume           = copy.area();
+        area             = copy.perimeter();
+        return;
+      }
+    const auto  &p = scene.geometry.particles;
+    const double r = p[0][dim];
+    if (p.size() == 1)
+      {
+        volume = dim == 2 ? M_PI * r * r : 4. / 3. * M_PI * r * r * r;
+        area   = dim == 2 ? 2 * M_PI * r : 4 * M_PI * r * r;
+        return;
+      }
+    double d2 = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      d2 += std::pow(p[1][d] - p[0][d], 2);
+    volume = two_ball_volume<dim>(r, std::sqrt(d2));
+    area   = two_ball_surface<dim>(r, std::sqrt(d2));
+  }
+
+  // Transport: run to the end time (where the exact shape is the initial
+  // one) and measure volume and shape errors against the exact shape.
+  template <int dim>
+  void
+  transport(const std::string &scene_file, const Options &options)
+  {
+    const SceneParameters base = read_scene(scene_file, {});
+    Table table({"level", "h", "cells", "dofs", "steps", "wall_time",
+                 "volume_error", "shape_error", "shape_error/h",
+                 "max_distance/h", "iterations"},
+                options.csv);
+    for (const unsigned int level : options.levels)
+      {
+        const auto scene = read_scene(scene_file, resolution_overrides(base, level));
+        const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
+                         scene.domain.subdivisions[0] / std::pow(2.0, level);
+        Simulation<dim>     simulation(scene, MPI_COMM_WORLD, std::cout);
+        const auto          summary = simulation.run();
+        double              volume, area;
+        exact_measures<dim>(scene, volume, area);
+        const auto measured =
+          interface_measures::volume_and_area(simulation.level_set());
+        const auto exact_shape = make_initial_signed_distance<dim>(scene);
+        const auto shape =
+          interface_measures::shape_error(simulation.level_set(), *exact_shape);
+        table.add({double(level), h, double(summary.max_cells),
+                   double(summary.max_dofs), double(summary.steps),
+                   summary.wall_time,
+                   std::abs(measured.solid_volume - volume) / volume,
+                   shape.symmetric_difference / area,
+                   shape.symmetric_difference / area / h,
+                   shape.max_distance / h, summary.mean_iterations});
+      }
+    check("finest relative volume error", table.finest("volume_error"),
+          options, "max-volume-error", true);
+    check("finest shape error (mean distance)", table.finest("shape_error"),
+          options, "max-shape-error", true);
+    check("observed order of the shape error", table.order("shape_error"),
+          options, "min-order", false);
+  }
+
+  // Measures: volume and interface area of the scene's solid at t = 0.
+  template <int dim>
+  void
+  measures(const std::string &scene_file,
+           const std::string &particles,
+           const Options     &options)
+  {
+    const SceneParameters base = read_scene(scene_file, {});
+    Table table({"level", "h", "cells", "volume_error", "area_error"},
+                options.csv);
+    for (const unsigned int level : options.levels)
+      {
+        auto overrides = resolution_overrides(base, level);
+        overrides.emplace_back("Geometry/Particles", particles);
+        const auto scene = read_scene(scene_file, overrides);
+        const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
+                         scene.domain.subdivisions[0] / std::pow(2.0, level);
+        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        double volume, area;
+        exact_measures<dim>(scene, volume, area);
+        const auto m = interface_measures::volume_and_area(simulation.level_set());
+        table.add({double(level), h,
+                   double(simulation.triangulation().n_global_active_cells()),
+                   std::abs(m.solid_volume - volume) / volume,
+                   std::abs(m.interface_area - area) / area});
+      }
+    check("finest relative volume error", table.finest("volume_error"), options,
+          "max-volume-error", true);
+    check("finest relative area error", table.finest("area_error"), options,
+          "max-area-error", true);
+    check("observed order of the volume error", table.order("volume_error"),
+          options, "min-order", false);
+    check("observed order of the area error", table.order("area_error"),
+          options, "min-area-order", false);
+  }
+
+  // Reinitialisation: start from alpha = filter(2 d), whose gradient is
+  // twice the target, run with zero velocity and measure how close
+  // |grad alpha| comes to g(alpha) (Eq. 67) and how far alpha = 0 moved.
+  void
+  reinitialisation(const std::string &scene_file, const Options &options)
+  {
+    const SceneParameters base = read_scene(scene_file, {});
+    Table table({"level", "h", "steps", "grad_rms_before", "grad_rms_after",
+                 "grad_max_after", "interface_shift/h"},
+                options.csv);
+    for (const unsigned int level : options.levels)
+      {
+        auto overrides = resolution_overrides(base, level);
+        const double h = 0.25 / std::pow(2.0, level);
+        // 40 steps of lambda dt = 0.25 h move information 10 h, beyond the
+        // filter thickness (6 h): enough to reach the target everywhere.
+        overrides.insert(overrides.end(),
+                         {{"Velocity/Type", "none"},
+                          {"Time/CFL number", "0"},
+                          {"Time/Time step", "0.01"},
+                          {"Time/End time", "0.4"},
+                          {"Mesh refinement/Adapt interval", "1000000"}});
+        const auto scene = read_scene(scene_file, overrides);
+        Simulation<2> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        const auto distance = make_initial_signed_distance<2>(scene);
+        const LevelSetFilter &filter = simulation.filter();
+        simulation.set_level_set(ScalarFunctionFromFunctionObject<2>(
+          [&](const Point<2> &p) { return filter.filter(2 * distance->value(p)); }));
+        const auto before =
+          interface_measures::gradient_norm_error(simulation.level_set(), filter);
+        const auto summary = simulation.run();
+        const auto after =
+          interface_measures::gradient_norm_error(simulation.level_set(), filter);
+        const auto shift =
+          interface_measures::shape_error(simulation.level_set(), *distance);
+        table.add({double(level), h, double(summary.steps), before.rms_error,
+                   after.rms_error, after.max_error, shift.max_distance / h});
+      }
+    check("finest rms |grad alpha| - g(alpha)", table.finest("grad_rms_after"),
+          options, "max-gradient-error", true);
+    check("finest interface shift / h", table.finest("interface_shift/h"),
+          options, "max-shift", true);
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::vector<std::string> args(argv, argv + argc);
+  try
+    {
+      if (args.size() < 3)
+        throw std::runtime_error("see the comment at the top of validation.cc");
+      if (args[1] == "measures")
+        {
+          // args: measures SCENE PARTICLES LEVELS ...
+          const auto scene = read_scene(args[2], {});
+          if (scene.dimension == 2)
+            measures<2>(args[2], args[3], parse_options(args, 4));
+          else
+            measures<3>(args[2], args[3], parse_options(args, 4));
+        }
+      else if (args[1] == "transport")
+        {
+          const auto scene = read_scene(args[2], {});
+          if (scene.dimension == 2)
+            transport<2>(args[2], parse_options(args, 3));
+          else
+            transport<3>(args[2], parse_options(args, 3));
+        }
+      else if (args[1] == "reinit")
+        reinitialisation(args[2], parse_options(args, 3));
+      else
+        throw std::runtime_error("unknown case " + args[1]);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "levelsinter_validation: " << e.what() << "\n";
+      return 2;
+    }
+  return failures == 0 ? 0 : 1;
+}
