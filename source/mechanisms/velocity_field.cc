@@ -4,7 +4,6 @@
 
 #include <deal.II/fe/fe_q.h>
 
-#include <deal.II/lac/affine_constraints.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
@@ -29,6 +28,12 @@ namespace levelsinter
     owned_dofs = dofs.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dofs, relevant_dofs);
     ghosted_velocity.reinit(owned_dofs, relevant_dofs, dofs.get_communicator());
+    // Hanging nodes must follow their parents so that the field is
+    // continuous; built once per mesh, used at every interpolation.
+    hanging_node_constraints.clear();
+    hanging_node_constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, hanging_node_constraints);
+    hanging_node_constraints.close();
   }
 
   template <int dim>
@@ -37,13 +42,7 @@ namespace levelsinter
   {
     Vector owned(owned_dofs, dofs.get_communicator());
     VectorTools::interpolate(dofs, velocity, owned);
-    // Hanging nodes must follow their parents so that the field is
-    // continuous.
-    AffineConstraints<double> hanging;
-    hanging.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dofs, hanging);
-    hanging.close();
-    hanging.distribute(owned);
+    hanging_node_constraints.distribute(owned);
     ghosted_velocity = owned;
   }
 

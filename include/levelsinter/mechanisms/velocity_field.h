@@ -9,6 +9,7 @@
 
 #include <deal.II/fe/fe_system.h>
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 namespace levelsinter
@@ -76,7 +77,8 @@ namespace levelsinter
     FESystem<dim>   finite_element;
     DoFHandler<dim> dofs;
     IndexSet        owned_dofs;
-    IndexSet        relevant_dofs;
-    Vector          ghosted_velocity;
+    IndexSet                  relevant_dofs;
+    AffineConstraints<double> hanging_node_constraints;
+    Vector                    ghosted_velocity;
   };
 } // namespace levelsinter
