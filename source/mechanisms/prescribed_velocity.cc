@@ -127,6 +127,28 @@ namespace levelsinter
     return function;
   }
 
+  template <int dim>
+  PrescribedVelocity<dim>::PrescribedVelocity(
+    const SceneParameters::Velocity &parameters,
+    const double                     theta)
+    : function(make_prescribed_velocity<dim>(parameters))
+    , theta(theta)
+  {}
+
+  template <int dim>
+  void
+  PrescribedVelocity<dim>::add_velocity(const LevelSetField<dim> &,
+                                        const double        t,
+                                        const double        dt,
+                                        VelocityField<dim> &velocity)
+  {
+    function->set_time(t + theta * dt);
+    velocity.add(*function);
+  }
+
+  template class PrescribedVelocity<2>;
+  template class PrescribedVelocity<3>;
+
   template std::unique_ptr<Function<2>>
   make_prescribed_velocity<2>(const SceneParameters::Velocity &);
   template std::unique_ptr<Function<3>>

@@ -38,10 +38,27 @@ namespace levelsinter
 
   template <int dim>
   void
-  VelocityField<dim>::interpolate(const Function<dim> &velocity)
+  VelocityField<dim>::set_zero()
+  {
+    ghosted_velocity = 0;
+  }
+
+  template <int dim>
+  void
+  VelocityField<dim>::add(const Function<dim> &velocity)
   {
     Vector owned(owned_dofs, dofs.get_communicator());
     VectorTools::interpolate(dofs, velocity, owned);
+    add(owned);
+  }
+
+  template <int dim>
+  void
+  VelocityField<dim>::add(const Vector &increment)
+  {
+    Vector owned(owned_dofs, dofs.get_communicator());
+    owned = ghosted_velocity;
+    owned += increment;
     hanging_node_constraints.distribute(owned);
     ghosted_velocity = owned;
   }

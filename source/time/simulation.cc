@@ -5,7 +5,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <levelsinter/analysis/reference_shapes.h>
-#include <levelsinter/mechanisms/prescribed_velocity.h>
+#include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
 
 #include <cmath>
@@ -44,7 +44,7 @@ namespace levelsinter
     , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
     , alpha(tria)
     , velocity(tria)
-    , prescribed_velocity(make_prescribed_velocity<dim>(scene.velocity))
+    , mechanisms(make_scene_mechanisms<dim>(scene, timer_output))
     , initial_distance(make_initial_signed_distance<dim>(scene))
     , band_refinement(scene.refinement, level_set_filter)
     , transport(level_set_filter,
@@ -94,6 +94,8 @@ namespace levelsinter
   {
     refine_initial_mesh();
     velocity.setup_dofs();
+    for (auto &mechanism : mechanisms)
+      mechanism->setup(alpha);
     transport.setup_system(alpha);
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
     initialised = true;
@@ -119,7 +121,31 @@ namespace levelsinter
     tria.execute_coarsening_and_refinement();
     alpha.transfer_after_refinement();
     velocity.setup_dofs();
+    for (auto &mechanism : mechanisms)
+      mechanism->setup(alpha);
     transport.setup_system(alpha);
+  }
+
+  template <int dim>
+  double
+  Simulation<dim>::speed_near_interface() const
+  {
+    // The CFL limit concerns the interface and the filter ramp around it;
+    // far away alpha is saturated and constant.
+    return velocity.max_norm_near_interface(alpha.dof_handler(),
+                                            alpha.alpha(),
+                                            0.999 *
+                                              level_set_filter.saturation());
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::compute_interface_velocity(const double t, const double dt)
+  {
+    velocity.set_zero();
+    for (auto &mechanism : mechanisms)
+      mechanism->add_velocity(alpha, t, dt, velocity);
+    interface_speed = speed_near_interface();
   }
 
   template <int dim>
@@ -129,10 +155,10 @@ namespace levelsinter
     double dt = std::numeric_limits<double>::max();
     if (scene.time.time_step > 0)
       dt = scene.time.time_step;
-    // The CFL limit concerns the interface and the filter ramp around it;
-    // far away alpha is saturated and constant.
-    const double v_max = velocity.max_norm_near_interface(
-      alpha.dof_handler(), alpha.alpha(), 0.999 * level_set_filter.saturation());
+    for (const auto &mechanism : mechanisms)
+      dt = std::min(dt, mechanism->time_step_limit(alpha));
+    // The speed of the last velocity computed: the previous step's.
+    const double v_max = interface_speed;
     if (scene.time.cfl > 0 && v_max > 0)
       dt = std::min(dt, scene.time.cfl * h_min / v_max);
     if (dt == std::numeric_limits<double>::max())
@@ -256,19 +282,30 @@ namespace levelsinter
 
     double       t    = 0;
     unsigned int step = 0;
-    prescribed_velocity->set_time(t);
-    velocity.interpolate(*prescribed_velocity);
+    compute_interface_velocity(t, 0);
     record(step, t, 0, scene.time.end_time == 0);
 
     const double end_time = scene.time.end_time;
     while (t < end_time * (1 - 1e-12) &&
            (scene.time.max_steps == 0 || step < scene.time.max_steps))
       {
-        // 1. Interface velocity: prescribed, at the start for the CFL limit
-        //    and at t + theta dt for the theta scheme.
-        const double dt = choose_time_step(t);
-        prescribed_velocity->set_time(t + scene.level_set.theta * dt);
-        velocity.interpolate(*prescribed_velocity);
+        // 0. Keep the refined band on the interface.
+        if (step > 0 && step % scene.refinement.adapt_interval == 0)
+          adapt_mesh();
+
+        // 1. Interface velocity for t -> t + dt. dt comes from the velocity
+        //    of the previous step; if this step's velocity is much faster,
+        //    the step is chosen again from it.
+        double dt = choose_time_step(t);
+        compute_interface_velocity(t, dt);
+        for (unsigned int retry = 0;
+             scene.time.cfl > 0 &&
+             interface_speed * dt > 1.5 * scene.time.cfl * h_min && retry < 5;
+             ++retry)
+          {
+            dt = choose_time_step(t);
+            compute_interface_velocity(t, dt);
+          }
 
         // 2. Transport with convective reinitialisation (Eq. 68).
         last_iterations = transport.advance(alpha, velocity, dt);
@@ -276,13 +313,7 @@ namespace levelsinter
         t += dt;
         ++step;
 
-        // 3. Keep the refined band on the interface.
-        if (step % scene.refinement.adapt_interval == 0)
-          adapt_mesh();
-
-        // 4. Metrics, fields, progress.
-        prescribed_velocity->set_time(t);
-        velocity.interpolate(*prescribed_velocity);
+        // 3. Metrics, fields, progress.
         const bool final_step =
           !(t < end_time * (1 - 1e-12)) ||
           (scene.time.max_steps > 0 && step >= scene.time.max_steps);

@@ -32,9 +32,42 @@ namespace levelsinter
     void
     setup_dofs();
 
-    /** Nodal interpolation of a dim-component function at its current time. */
+    /** v = 0: the start of the sum over the mechanisms. */
     void
-    interpolate(const Function<dim> &velocity);
+    set_zero();
+
+    /** v += nodal interpolant of a dim-component function at its time. */
+    void
+    add(const Function<dim> &velocity);
+
+    /**
+     * v += @p increment, a vector over the locally owned DoFs of
+     * dof_handler() (a mechanism that solves for its velocity on its own
+     * space copies it into this numbering first). Hanging-node values are
+     * made consistent here.
+     */
+    void
+    add(const Vector &increment);
+
+    /** Locally owned and locally relevant DoFs of dof_handler(). */
+    const IndexSet &
+    locally_owned() const
+    {
+      return owned_dofs;
+    }
+
+    const IndexSet &
+    locally_relevant() const
+    {
+      return relevant_dofs;
+    }
+
+    /** Hanging-node constraints of the velocity space. */
+    const AffineConstraints<double> &
+    constraints() const
+    {
+      return hanging_node_constraints;
+    }
 
     /** max over the nodes of |v| (all processes). */
     double

@@ -12,6 +12,7 @@
 #include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/mechanisms/velocity_field.h>
 #include <levelsinter/scene/scene_parameters.h>
 
@@ -22,9 +23,9 @@ namespace levelsinter
 {
   /**
    * One scene from t = 0 to the end time. Each step reads like the physics:
-   * interface velocity (here prescribed) -> transport with convective
-   * reinitialisation -> adapt the mesh around the interface -> metrics and
-   * fields.
+   * interface velocity (the sum over the scene's mechanisms) -> transport
+   * with convective reinitialisation -> adapt the mesh around the interface
+   * -> metrics and fields.
    */
   template <int dim>
   class Simulation
@@ -93,6 +94,10 @@ namespace levelsinter
     adapt_mesh();
     double
     choose_time_step(const double t) const;
+    double
+    speed_near_interface() const;
+    void
+    compute_interface_velocity(const double t, const double dt);
     void
     record(const unsigned int step,
            const double       t,
@@ -107,13 +112,14 @@ namespace levelsinter
     LevelSetFilter                            level_set_filter;
     LevelSetField<dim>                        alpha;
     VelocityField<dim>                        velocity;
-    std::unique_ptr<Function<dim>>            prescribed_velocity;
+    std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
     std::unique_ptr<Function<dim>>            initial_distance;
     InterfaceBandRefinement<dim>              band_refinement;
     ConvectiveReinitialization<dim>           transport;
     std::unique_ptr<MetricsLog>               metrics;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
+    double                                    interface_speed = 0;
     Summary                                   summary;
     unsigned int                              total_iterations = 0;
     unsigned int                              last_iterations  = 0;

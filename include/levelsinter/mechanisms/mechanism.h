@@ -1,0 +1,64 @@
+#pragma once
+
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/mechanisms/velocity_field.h>
+
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace levelsinter
+{
+  /**
+   * One physical cause of interface motion (prescribed velocity, viscous
+   * flow, surface diffusion, ...). The time loop owns a list of the
+   * mechanisms a scene switches on and asks each for its share of the
+   * interface velocity; a mechanism a scene does not list is never built, so
+   * nothing it needs (a Stokes system, a curvature solve) is assembled.
+   */
+  template <int dim>
+  class Mechanism
+  {
+  public:
+    virtual ~Mechanism() = default;
+
+    /** The mesh changed (or t = 0): size matrices and vectors. */
+    virtual void
+    setup(const LevelSetField<dim> &alpha) = 0;
+
+    /**
+     * Add this mechanism's velocity for the step t -> t + dt, computed from
+     * the level set at t, to @p velocity (which holds the sum of the
+     * mechanisms before this one).
+     */
+    virtual void
+    add_velocity(const LevelSetField<dim> &alpha,
+                 const double              t,
+                 const double              dt,
+                 VelocityField<dim>       &velocity) = 0;
+
+    /**
+     * A time-step limit of the mechanism's own (e.g. an explicit capillary
+     * or diffusion limit), on top of the CFL limit the time loop applies to
+     * the summed velocity. Infinity if none.
+     */
+    virtual double
+    time_step_limit(const LevelSetField<dim> &) const
+    {
+      return std::numeric_limits<double>::infinity();
+    }
+
+    /** Extra metrics.csv columns and their values after the last step. */
+    virtual std::vector<std::string>
+    metric_names() const
+    {
+      return {};
+    }
+
+    virtual std::vector<double>
+    metric_values() const
+    {
+      return {};
+    }
+  };
+} // namespace levelsinter

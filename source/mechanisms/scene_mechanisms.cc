@@ -1,0 +1,21 @@
+#include <levelsinter/mechanisms/prescribed_velocity.h>
+#include <levelsinter/mechanisms/scene_mechanisms.h>
+
+namespace levelsinter
+{
+  template <int dim>
+  std::vector<std::unique_ptr<Mechanism<dim>>>
+  make_scene_mechanisms(const SceneParameters &scene, TimerOutput &)
+  {
+    std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
+    if (scene.velocity.type != "none")
+      mechanisms.push_back(std::make_unique<PrescribedVelocity<dim>>(
+        scene.velocity, scene.level_set.theta));
+    return mechanisms;
+  }
+
+  template std::vector<std::unique_ptr<Mechanism<2>>>
+  make_scene_mechanisms<2>(const SceneParameters &, TimerOutput &);
+  template std::vector<std::unique_ptr<Mechanism<3>>>
+  make_scene_mechanisms<3>(const SceneParameters &, TimerOutput &);
+} // namespace levelsinter
