@@ -132,15 +132,24 @@ namespace levelsinter
               const double old_residual_part =
                 a / dt - (1 - theta) * (w * grad_alpha[q]) + source;
               const double JxW = fe_values.JxW(q);
-              // Isotropic diffusion nu = c (h_min / dt) |sgn| h: SUPG damps only along streamlines,
-              // and where they run diagonal to the cells the Q1
-              // checkerboard mode is (nearly) invisible to w . grad and
-              // grows. nu vanishes on the interface (sgn = 0), so it
-              // smooths the filter ramp without curvature-driven motion of
-              // alpha = 0 to first order.
+              // Consistent diffusion nu div(grad alpha - w(alpha) g(alpha) n),
+              // n from the previous step. It damps the Q1 checkerboard mode
+              // that SUPG leaves alone where the streamlines run diagonal to
+              // the cells, and on an exact filtered distance (Eq. 67) it
+              // vanishes near alpha = 0, so unlike a plain Laplacian it does
+              // not move a curved interface by nu kappa |grad alpha|.
+              // w = 1 - (alpha/s)^4 fades the target out towards saturation,
+              // where |grad alpha| = g(alpha) has no stable solution (g -> 0
+              // but the direction n of a nearly flat alpha is noise).
               const double nu =
-                settings.reinitialization_diffusion * (h_min / dt) *
-                std::abs(sign) * h;
+                settings.reinitialization_diffusion * (h_min / dt) * h;
+              const double ratio2 = (a / filter.saturation()) *
+                                    (a / filter.saturation());
+              Tensor<1, dim> target_gradient;
+              if (norm > 1e-12 * filter.saturation() / h)
+                target_gradient = (1 - ratio2 * ratio2) *
+                                  filter.gradient_norm_target(a) / norm *
+                                  grad_alpha[q];
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
                   advective[i] = w * fe_values.shape_grad(i, q);
@@ -154,7 +163,10 @@ namespace levelsinter
                       (fe_values.shape_value(j, q) / dt + theta * advective[j]) +
                       nu * fe_values.shape_grad(i,q)*fe_values.shape_grad(j,q))*
                       JxW;
-                  cell_rhs(i) += test[i] * old_residual_part * JxW;
+                  cell_rhs(i) += (test[i] * old_residual_part +
+                                  nu * target_gradient *
+                                    fe_values.shape_grad(i, q)) *
+                                 JxW;
                 }
             }
 

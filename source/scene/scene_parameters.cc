@@ -145,12 +145,13 @@ namespace levelsinter
         "reinitialisation off (pure transport).");
       prm.declare_entry(
         "Reinitialization diffusion",
-        "0.02",
+        "0.05",
         Patterns::Double(0, 1),
-        "c in the diffusion nu = c (h_min / dt) |sgn(alpha)| h added to the "
-        "reinitialisation. It vanishes on the interface; without it the "
-        "scheme grows grid-scale wiggles where the interface is diagonal to "
-        "the cells (doc/numerics.md).");
+        "c in the consistent diffusion nu div(grad alpha - g(alpha) n), "
+        "nu = c (h_min / dt) h, added to the reinitialisation. It vanishes "
+        "on an exact filtered distance; without it the scheme grows "
+        "grid-scale wiggles where the interface is diagonal to the cells "
+        "(doc/numerics.md).");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),

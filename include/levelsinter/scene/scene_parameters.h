@@ -59,7 +59,7 @@ namespace levelsinter
       double       solver_tolerance = 1e-10;
       unsigned int max_iterations   = 1000;
       double       reinitialization_strength  = 0.25;
-      double       reinitialization_diffusion = 0.02;
+      double       reinitialization_diffusion = 0.05;
     } level_set;
 
     struct Refinement
