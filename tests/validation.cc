@@ -152,10 +152,18 @@ namespace
   }
 
   // Resolution-dependent settings: filter, band and step scale with the
-  // finest cell so that every level sees the same discrete problem.
+  // finest cell so that every level sees the same discrete problem
+  // (E = 6 h, band 4 h), unless --filter-thickness / --band-width fix them
+  // in length units, which shows convergence at a fixed physical filter.
   std::vector<std::pair<std::string, std::string>>
-  resolution_overrides(const SceneParameters &base, const unsigned int level)
+  resolution_overrides(const SceneParameters &base,
+                       const unsigned int     level,
+                       const Options         &options = {})
   {
+    const auto fixed = [&](const std::string &name, const double scaled) {
+      const auto it = options.limits.find(name);
+      return std::to_string(it == options.limits.end() ? scaled : it->second);
+    };
     const double h = (base.domain.upper_corner[0] - base.domain.lower_corner[0]) /
                      base.domain.subdivisions[0] / std::pow(2.0, level);
     // Each run writes its metrics to its own directory below the working
@@ -167,9 +175,9 @@ namespace
     return {{"Output/Directory", output},
             {"Mesh refinement/Maximum level", std::to_string(level)},
             {"Mesh refinement/Minimum level", std::to_string(level > 4 ? level - 4 : 0)},
-            {"Mesh refinement/Band width", std::to_string(4 * h)},
+            {"Mesh refinement/Band width", fixed("band-width", 4 * h)},
             {"Mesh refinement/Adapt interval", "2"},
-            {"Level set/Filter thickness", std::to_string(6 * h)}};
+            {"Level set/Filter thickness", fixed("filter-thickness", 6 * h)}};
   }
 
   template <int dim>
@@ -213,7 +221,7 @@ namespace
                 options.csv);
     for (const unsigned int level : options.levels)
       {
-        const auto scene = read_scene(scene_file, resolution_overrides(base, level));
+        const auto scene = read_scene(scene_file, resolution_overrides(base, level, options));
         const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
                          scene.domain.subdivisions[0] / std::pow(2.0, level);
         Simulation<dim>     simulation(scene, MPI_COMM_WORLD, std::cout);
@@ -253,7 +261,7 @@ namespace
                 options.csv);
     for (const unsigned int level : options.levels)
       {
-        auto overrides = resolution_overrides(base, level);
+        auto overrides = resolution_overrides(base, level, options);
         overrides.emplace_back("Geometry/Particles", particles);
         const auto scene = read_scene(scene_file, overrides);
         const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
@@ -290,7 +298,7 @@ namespace
                 options.csv);
     for (const unsigned int level : options.levels)
       {
-        auto overrides = resolution_overrides(base, level);
+        auto overrides = resolution_overrides(base, level, options);
         const double h = 0.25 / std::pow(2.0, level);
         // 40 steps (the default) of lambda dt = 0.25 h move information
         // 10 h, beyond the filter thickness (6 h): enough to reach the
