@@ -152,6 +152,15 @@ namespace levelsinter
         "on an exact filtered distance; without it the scheme grows "
         "grid-scale wiggles where the interface is diagonal to the cells "
         "(doc/numerics.md).");
+      prm.declare_entry(
+        "Reinitialization tolerance",
+        "0.25",
+        Patterns::Double(0),
+        "delta: the reinitialisation (and its diffusion) acts at full "
+        "strength where ||grad alpha| - g(alpha)| >= delta and in proportion "
+        "to the deviation below it, so that a level set already at its "
+        "target is not rebuilt every step. 0 reinitialises everywhere at "
+        "full strength, as in the paper (doc/numerics.md).");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -362,6 +371,8 @@ namespace levelsinter
       prm.get_double("Reinitialization strength");
     level_set.reinitialization_diffusion =
       prm.get_double("Reinitialization diffusion");
+    level_set.reinitialization_tolerance =
+      prm.get_double("Reinitialization tolerance");
     if (level_set.filter_thickness <= 0)
       fail("Level set/Filter thickness", "must be positive");
     prm.leave_subsection();

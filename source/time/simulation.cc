@@ -52,7 +52,8 @@ namespace levelsinter
                  scene.level_set.solver_tolerance,
                  scene.level_set.max_iterations,
                  scene.level_set.reinitialization_strength,
-                 scene.level_set.reinitialization_diffusion},
+                 scene.level_set.reinitialization_diffusion,
+                 scene.level_set.reinitialization_tolerance},
                 timer_output)
     , field_output(scene.output.directory,
                    scene.output.write_vtu,

@@ -45,8 +45,10 @@ namespace levelsinter
       unsigned int max_iterations   = 1000;
       // lambda dt / h_min; the paper's choice is 1.
       double reinitialization_strength = 0.25;
-      // c in the reinitialisation diffusion nu = c (h_min / dt) |sgn(alpha)| h.
-      double reinitialization_diffusion = 0.02;
+      // c in the consistent diffusion nu = c (h_min / dt) h.
+      double reinitialization_diffusion = 0.05;
+      // delta: full reinitialisation where ||grad alpha| - g| >= delta.
+      double reinitialization_tolerance = 0.25;
     };
 
     ConvectiveReinitialization(const LevelSetFilter &filter,

@@ -60,6 +60,7 @@ namespace levelsinter
       unsigned int max_iterations   = 1000;
       double       reinitialization_strength  = 0.25;
       double       reinitialization_diffusion = 0.05;
+      double       reinitialization_tolerance = 0.25;
     } level_set;
 
     struct Refinement
