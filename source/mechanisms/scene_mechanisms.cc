@@ -1,5 +1,6 @@
 #include <levelsinter/mechanisms/prescribed_velocity.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
+#include <levelsinter/mechanisms/viscous_flow.h>
 
 namespace levelsinter
 {
@@ -11,6 +12,9 @@ namespace levelsinter
     if (scene.velocity.type != "none")
       mechanisms.push_back(std::make_unique<PrescribedVelocity<dim>>(
         scene.velocity, scene.level_set.theta));
+    if (scene.viscous_flow.enabled)
+      mechanisms.push_back(
+        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow));
     return mechanisms;
   }
 
