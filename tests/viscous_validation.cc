@@ -26,6 +26,7 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -263,6 +264,237 @@ namespace
     check("finest C = v_max eta / gamma (worst form)", worst_C, options,
           "max-C");
   }
+
+  // Hopper's exact coalescence of two equal cylinders of radius R (DESIGN.md
+  // Sect. 4 item 4): z = A zeta / (1 - m zeta^2), |zeta| = 1, with
+  // A = sqrt2 R (1 - m^2) / sqrt(1 + m^2), neck half-width
+  // y_n = sqrt2 R (1 - m) / sqrt(1 + m^2) and
+  // t gamma / (eta R) = (pi / sqrt2) int_m^1 dk / (k sqrt(1 + k^2) K(k)).
+  class Hopper
+  {
+  public:
+    explicit Hopper(const double R)
+      : R(R)
+    {}
+
+    double
+    neck(const double m) const
+    {
+      return std::sqrt(2.) * R * (1 - m) / std::sqrt(1 + m * m);
+    }
+
+    // m for a neck half-width y (y_n decreases monotonically with m).
+    double
+    m_of_neck(const double y) const
+    {
+      return bisect([&](const double m) { return neck(m) - y; }, 0, 1);
+    }
+
+    // Dimensionless time t gamma / (eta R) from touching (m = 1) to m. The
+    // integrand vanishes like 1/log at k = 1 (K(k) diverges); substituting
+    // k = 1 - (1 - m) s^2 removes the endpoint steepness, then Gauss
+    // quadrature on 64 panels converges to ~1e-8 (checked against the
+    // values DESIGN.md quotes).
+    double
+    time(const double m) const
+    {
+      const QGauss<1> gauss(8);
+      const unsigned  panels = 64;
+      double          sum    = 0;
+      for (unsigned int p = 0; p < panels; ++p)
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            const double s  = (p + gauss.point(q)[0]) / panels;
+            const double k  = 1 - (1 - m) * s * s;
+            const double dk = 2 * (1 - m) * s / panels * gauss.weight(q);
+            sum += dk / (k * std::sqrt(1 + k * k) * std::comp_ellint_1(k));
+          }
+      return M_PI / std::sqrt(2.) * sum;
+    }
+
+    // m reached at dimensionless time tau (time() decreases with m).
+    double
+    m_of_time(const double tau) const
+    {
+      return bisect([&](const double m) { return tau - time(m); }, 0, 1);
+    }
+
+    // Boundary points z(theta) of the shape with parameter m.
+    std::vector<Point<2>>
+    boundary(const double m, const unsigned int n) const
+    {
+      const double          A = std::sqrt(2.) * R * (1 - m * m) / std::sqrt(1 + m * m);
+      std::vector<Point<2>> points(n);
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const std::complex<double> zeta =
+            std::polar(1.0, 2 * M_PI * i / n);
+          const std::complex<double> z = A * zeta / (1. - m * zeta * zeta);
+          points[i]                    = Point<2>(z.real(), z.imag());
+        }
+      return points;
+    }
+
+    // Implicit quartic: negative inside the solid.
+    double
+    implicit(const double m, const Point<2> &p) const
+    {
+      const double x2 = p[0] * p[0], y2 = p[1] * p[1];
+      return (x2 + y2) * (x2 + y2) -
+             2 * R * R / (1 + m * m) *
+               ((1 + m) * (1 + m) * x2 + (1 - m) * (1 - m) * y2);
+    }
+
+  private:
+    template <typename F>
+    static double
+    bisect(const F &f, double a, double b)
+    {
+      // f changes sign on [a, b]; f(a) has the sign of -f(b).
+      const double fa = f(a);
+      for (unsigned int i = 0; i < 200 && b - a > 1e-14; ++i)
+        {
+          const double c = 0.5 * (a + b);
+          if ((f(c) > 0) == (fa > 0))
+            a = c;
+          else
+            b = c;
+        }
+      return 0.5 * (a + b);
+    }
+
+    double R;
+  };
+
+  // Filtered signed distance to Hopper's shape: distance to a fine polygon
+  // of the boundary, sign from the implicit quartic.
+  class HopperLevelSet : public Function<2>
+  {
+  public:
+    HopperLevelSet(const Hopper &hopper, const double m, const LevelSetFilter &filter)
+      : m(m)
+      , hopper(hopper)
+      , points(hopper.boundary(m, 20000))
+      , filter(filter)
+    {}
+
+    double
+    value(const Point<2> &p, const unsigned int = 0) const override
+    {
+      double d2 = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const Point<2>     &a = points[i];
+          const Point<2>     &b = points[(i + 1) % points.size()];
+          const Tensor<1, 2> ab = b - a;
+          const double       s  = std::clamp((p - a) * ab / ab.norm_square(), 0., 1.);
+          d2 = std::min(d2, (p - (a + s * ab)).norm_square());
+        }
+      const double d = std::sqrt(d2);
+      return filter.filter(hopper.implicit(m, p) <= 0 ? -d : d);
+    }
+
+  private:
+    double                m;
+    const Hopper         &hopper;
+    std::vector<Point<2>> points;
+    const LevelSetFilter &filter;
+  };
+
+  // Column values of a metrics.csv.
+  std::map<std::string, std::vector<double>>
+  read_metrics(const std::string &file_name)
+  {
+    std::ifstream                              in(file_name);
+    std::string                                line;
+    std::getline(in, line);
+    const auto names = Utilities::split_string_list(line, ',');
+    std::map<std::string, std::vector<double>> columns;
+    while (std::getline(in, line))
+      {
+        const auto values = Utilities::split_string_list(line, ',');
+        for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
+          columns[names[i]].push_back(std::stod(values[i]));
+      }
+    return columns;
+  }
+
+  // Two cylinders from Hopper's shape at the scene's initial neck: neck
+  // radius against the exact one, solid-area drift, Stokes iterations.
+  void
+  hopper(const std::string              &scene_file,
+         const std::vector<unsigned int> &levels,
+         const Options                   &options)
+  {
+    constexpr int dim = 2;
+    Table table({"level", "h", "steps", "max_dofs", "wall_time",
+                 "mean_stokes_its", "max_stokes_its", "max_neck_error",
+                 "final_neck_error", "area_drift"},
+                options.csv);
+    double finest_neck_error = 0, finest_area_drift = 0;
+    for (const unsigned int level : levels)
+      {
+        const auto   base = read_scene(scene_file, options.overrides);
+        const double h =
+          (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
+          base.domain.subdivisions[1] / std::pow(2., level);
+        const std::string directory =
+          output_directory("hopper_level" + std::to_string(level));
+        auto overrides = options.overrides;
+        overrides.insert(overrides.end(),
+                         {{"Mesh refinement/Maximum level", std::to_string(level)},
+                          {"Mesh refinement/Band width", std::to_string(6 * h)},
+                          {"Level set/Filter thickness", std::to_string(8 * h)},
+                          {"Output/Directory", directory},
+                          {"Output/Field formats", "none"}});
+        const auto scene = read_scene(scene_file, overrides);
+        const auto &particles = scene.geometry.particles;
+        const double R        = particles[0][dim];
+        const double gamma    = scene.viscous_flow.surface_tension;
+        const double eta      = scene.viscous_flow.solid_viscosity;
+        // The scene's overlapping circles fix the initial neck y0; Hopper's
+        // shape with that neck replaces them.
+        const double c  = std::abs(particles[1][0] - particles[0][0]) / 2;
+        const double y0 = std::sqrt(R * R - c * c);
+        const Hopper exact(R);
+        const double m0  = exact.m_of_neck(y0);
+        const double tau0 = exact.time(m0);
+
+        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        simulation.set_level_set(HopperLevelSet(exact, m0, simulation.filter()));
+        const auto summary = simulation.run();
+
+        const auto   metrics = read_metrics(directory + "/metrics.csv");
+        double       max_error = 0, final_error = 0;
+        const auto  &t    = metrics.at("time");
+        const auto  &neck = metrics.at("neck_radius");
+        for (unsigned int i = 0; i < t.size(); ++i)
+          {
+            const double y_exact =
+              exact.neck(exact.m_of_time(tau0 + t[i] * gamma / (eta * R)));
+            final_error = std::abs(neck[i] - y_exact) / y_exact;
+            max_error   = std::max(max_error, final_error);
+          }
+        const auto &its = metrics.at("stokes_iterations");
+        double      mean_its = 0, max_its = 0;
+        for (const double i : its)
+          {
+            mean_its += i / its.size();
+            max_its = std::max(max_its, i);
+          }
+        const double drift = std::abs(metrics.at("volume_change").back());
+        table.add({double(level), h, double(summary.steps),
+                   double(summary.max_dofs), summary.wall_time, mean_its,
+                   max_its, max_error, final_error, drift});
+        finest_neck_error = max_error;
+        finest_area_drift = drift;
+      }
+    check("finest max relative neck-radius error", finest_neck_error, options,
+          "max-neck-error");
+    check("finest solid-area drift", finest_area_drift, options,
+          "max-area-drift");
+  }
 } // namespace
 
 int
@@ -284,6 +516,16 @@ main(int argc, char **argv)
                levels,
                Utilities::split_string_list(args.at(3), ','),
                parse_options(args, 4));
+      else if (args[0] == "hopper")
+        hopper(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "hopper-reference")
+        {
+          // Print the reference for a check against the quoted values.
+          const Hopper exact(1.);
+          for (const double y : {0.1, 0.5, 1.0})
+            std::cout << "y_n/R = " << y << "  t gamma/(eta R) = "
+                      << exact.time(exact.m_of_neck(y)) << "\n";
+        }
       else
         throw std::runtime_error("unknown case " + args[0]);
     }

@@ -204,7 +204,8 @@ namespace levelsinter
     if (!settings.direct_solver)
       schur_matrix = 0;
 
-    const SmoothedHeaviside heaviside(settings.interface_half_width);
+    const double            E = settings.interface_half_width;
+    const SmoothedHeaviside heaviside(E);
     const double            gamma = settings.surface_tension;
     const bool              csf =
       settings.form == SurfaceTensionForm::csf && gamma != 0;
@@ -282,8 +283,10 @@ namespace levelsinter
 
           for (const unsigned int k : values.quadrature_point_indices())
             {
-              const double H_s = heaviside.solid_fraction(alpha_q[k]);
-              const PhaseCoefficients law = phase_law.coefficients(H_s);
+              const PhaseFractions fractions{
+                heaviside.solid_fraction(alpha_q[k]),
+                1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
+              const PhaseCoefficients law = phase_law.coefficients(fractions);
               const double tau = settings.stabilisation_constant * law.a2 *
                                  h * h / law.a1;
               for (unsigned int i = 0; i < n; ++i)
