@@ -469,12 +469,23 @@ namespace
         double       max_error = 0, final_error = 0;
         const auto  &t    = metrics.at("time");
         const auto  &neck = metrics.at("neck_radius");
+        std::ofstream series;
+        if (root && !options.csv.empty())
+          {
+            // The neck history behind the table, one file per level.
+            series.open(options.csv + ".level" + std::to_string(level) +
+                        ".csv");
+            series << "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R\n";
+          }
         for (unsigned int i = 0; i < t.size(); ++i)
           {
-            const double y_exact =
-              exact.neck(exact.m_of_time(tau0 + t[i] * gamma / (eta * R)));
+            const double tau = tau0 + t[i] * gamma / (eta * R);
+            const double y_exact = exact.neck(exact.m_of_time(tau));
             final_error = std::abs(neck[i] - y_exact) / y_exact;
             max_error   = std::max(max_error, final_error);
+            if (series.is_open())
+              series << tau << ',' << neck[i] / R << ',' << y_exact / R
+                     << '\n';
           }
         const auto &its = metrics.at("stokes_iterations");
         double      mean_its = 0, max_its = 0;

@@ -59,10 +59,12 @@ namespace levelsinter
                         "E of the smoothed Heaviside and Dirac (Eq. 102-104), "
                         "in finest-cell sizes h_min.");
       prm.declare_entry("Stabilisation constant",
-                        "1",
+                        "0.1",
                         Patterns::Double(0),
                         "c in the ASGS parameter tau_K = c a2 h_K^2 / a1 "
-                        "(Eq. 99 has c = 1).");
+                        "(Eq. 99 has c = 1). The smearing of the Laplace "
+                        "jump and the solid-volume drift grow with c, the "
+                        "solver iterations shrink (doc/validation.md).");
       prm.declare_entry("External pressure",
                         "0",
                         Patterns::Double(),
