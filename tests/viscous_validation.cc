@@ -228,7 +228,7 @@ namespace
           simulation.initialise();
           const auto &alpha = simulation.level_set();
 
-          ViscousFlow<dim>   flow(scene.viscous_flow);
+          ViscousFlow<dim>   flow(scene.viscous_flow, simulation.timer());
           VelocityField<dim> velocity(simulation.triangulation());
           velocity.setup_dofs();
           velocity.set_zero();

@@ -6,7 +6,7 @@ namespace levelsinter
 {
   template <int dim>
   std::vector<std::unique_ptr<Mechanism<dim>>>
-  make_scene_mechanisms(const SceneParameters &scene, TimerOutput &)
+  make_scene_mechanisms(const SceneParameters &scene, TimerOutput &timer)
   {
     std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
     if (scene.velocity.type != "none")
@@ -14,7 +14,7 @@ namespace levelsinter
         scene.velocity, scene.level_set.theta));
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
-        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow));
+        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow, timer));
     return mechanisms;
   }
 

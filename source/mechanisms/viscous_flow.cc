@@ -8,8 +8,10 @@
 namespace levelsinter
 {
   template <int dim>
-  ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters)
+  ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters,
+                                TimerOutput                 &timer)
     : parameters(parameters)
+    , timer(timer)
     , phases(parameters.solid_viscosity,
              parameters.fluid_viscosity,
              parameters.fluid_compressibility)
@@ -47,8 +49,14 @@ namespace levelsinter
                                  const double,
                                  VelocityField<dim> &velocity)
   {
-    operator_->assemble(alpha);
-    last_iterations = operator_->solve();
+    {
+      TimerOutput::Scope scope(timer, "viscous flow: assembly");
+      operator_->assemble(alpha);
+    }
+    {
+      TimerOutput::Scope scope(timer, "viscous flow: solve");
+      last_iterations = operator_->solve();
+    }
 
     // Same mesh, Q1 in both spaces: copy the nodal velocity cell by cell
     // from the Stokes numbering to the VelocityField numbering.

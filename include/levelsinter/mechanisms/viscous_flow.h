@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/base/timer.h>
+
 #include <levelsinter/mechanics/phase_law.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
 #include <levelsinter/mechanisms/mechanism.h>
@@ -18,7 +20,7 @@ namespace levelsinter
   class ViscousFlow : public Mechanism<dim>
   {
   public:
-    explicit ViscousFlow(const ViscousFlowParameters &parameters);
+    ViscousFlow(const ViscousFlowParameters &parameters, TimerOutput &timer);
 
     void
     setup(const LevelSetField<dim> &alpha) override;
@@ -54,6 +56,7 @@ namespace levelsinter
 
   private:
     const ViscousFlowParameters          parameters;
+    TimerOutput                         &timer;
     const NewtonianPhases                phases;
     std::unique_ptr<TwoPhaseStokes<dim>> operator_;
     double                               h_min           = 0;
