@@ -262,6 +262,9 @@ namespace levelsinter
     std::vector<Tensor<2, dim>>          grad_w(n);
     std::vector<double>                  div(n), q(n);
     std::vector<Tensor<1, dim>>          grad_q(n);
+    std::vector<unsigned int>            component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = finite_element.system_to_component_index(i).first;
 
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -298,20 +301,43 @@ namespace levelsinter
                   grad_q[i] = values[pressure].gradient(i, k);
                 }
               const double JxW = values.JxW(k);
+              // Each shape function of the FESystem has one component:
+              // only velocity-velocity (eps:eps), velocity-pressure (div q)
+              // and pressure-pressure pairs are nonzero. The operator is
+              // symmetric apart from a2, so the lower triangle of the
+              // same-type pairs is copied afterwards.
               for (unsigned int i = 0; i < n; ++i)
-                for (unsigned int j = 0; j < n; ++j)
-                  {
-                    cell_matrix(i, j) +=
-                      (law.a1 * eps[i] * eps[j] - law.a2 * div[i] * q[j] -
-                       q[i] * div[j] - law.compressibility * q[i] * q[j] -
-                       tau * grad_q[i] * grad_q[j]) *
-                      JxW;
-                    // Schur approximation M_{1/eta} + C (eta = a1 / 2).
-                    cell_schur(i, j) +=
-                      ((2 / law.a1 + law.compressibility) * q[i] * q[j] +
-                       tau * grad_q[i] * grad_q[j]) *
-                      JxW;
-                  }
+                {
+                  const bool i_pressure = component[i] == dim;
+                  for (unsigned int j = i; j < n; ++j)
+                    {
+                      const bool j_pressure = component[j] == dim;
+                      if (!i_pressure && !j_pressure)
+                        cell_matrix(i, j) += law.a1 * eps[i] * eps[j] * JxW;
+                      else if (i_pressure && j_pressure)
+                        {
+                          cell_matrix(i, j) -=
+                            (law.compressibility * q[i] * q[j] +
+                             tau * grad_q[i] * grad_q[j]) *
+                            JxW;
+                          // Schur approximation M_{1/eta} + C (eta = a1/2).
+                          cell_schur(i, j) +=
+                            ((2 / law.a1 + law.compressibility) * q[i] *
+                               q[j] +
+                             tau * grad_q[i] * grad_q[j]) *
+                            JxW;
+                        }
+                      else
+                        {
+                          // a2 weighs p in the momentum equation only (the
+                          // elastic law has a2 != 1): both entries here.
+                          const unsigned int v = i_pressure ? j : i;
+                          const unsigned int p = i_pressure ? i : j;
+                          cell_matrix(v, p) -= law.a2 * div[v] * q[p] * JxW;
+                          cell_matrix(p, v) -= div[v] * q[p] * JxW;
+                        }
+                    }
+                }
 
               if (csf)
                 {
@@ -374,6 +400,13 @@ namespace levelsinter
                                      face_values.JxW(k);
                 }
 
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              if ((component[i] == dim) == (component[j] == dim))
+                {
+                  cell_matrix(i, j) = cell_matrix(j, i);
+                  cell_schur(i, j)  = cell_schur(j, i);
+                }
           cell->get_dof_indices(indices);
           constraints.distribute_local_to_global(
             cell_matrix, cell_rhs, indices, matrix, rhs);
