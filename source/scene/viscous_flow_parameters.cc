@@ -133,13 +133,13 @@ namespace levelsinter
 
     if (!enabled)
       return;
-    if (solid_viscosity <= 0)
-      fail("Solid viscosity", "must be positive");
-    if (fluid_viscosity <= 0)
-      fail("Fluid viscosity", "must be positive");
-    if (interface_half_width <= 0)
-      fail("Interface half width", "must be positive");
-    if (stabilisation_constant <= 0)
-      fail("Stabilisation constant", "must be positive");
+    const std::vector<std::pair<double, std::string>> positive = {
+      {solid_viscosity, "Solid viscosity"},
+      {fluid_viscosity, "Fluid viscosity"},
+      {interface_half_width, "Interface half width"},
+      {stabilisation_constant, "Stabilisation constant"}};
+    for (const auto &[value, entry] : positive)
+      if (value <= 0)
+        fail(entry, "must be positive");
   }
 } // namespace levelsinter
