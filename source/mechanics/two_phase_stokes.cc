@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 namespace levelsinter
@@ -481,9 +482,26 @@ namespace levelsinter
         SolverFGMRES<BlockVector> solver(
           control, SolverFGMRES<BlockVector>::AdditionalData(100));
         constraints.set_zero(owned_solution);
-        if (system_rhs.l2_norm() > 0)
-          solver.solve(system_matrix, owned_solution, system_rhs,
-                       preconditioner);
+        try
+          {
+            if (system_rhs.l2_norm() > 0)
+              solver.solve(system_matrix,
+                           owned_solution,
+                           system_rhs,
+                           preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            // A diagnosis instead of deal.II's stack trace.
+            std::ostringstream message;
+            message << "viscous flow: FGMRES did not reach the relative "
+                    << "residual " << settings.tolerance << " in "
+                    << e.last_step << " iterations (residual "
+                    << e.last_residual / system_rhs.l2_norm()
+                    << "); raise 'Viscous flow/Maximum solver iterations' "
+                    << "or use 'Solver = direct' for a small 2D scene";
+            throw std::runtime_error(message.str());
+          }
         iterations = control.last_step();
       }
     constraints.distribute(owned_solution);
