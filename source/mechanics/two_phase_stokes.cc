@@ -240,8 +240,9 @@ namespace levelsinter
         NonMatching::RegionUpdateFlags flags;
         flags.surface =
           update_gradients | update_JxW_values | update_normal_vectors;
-        // 2 points per direction integrate the Q1 test-function gradients
-        // (constant along the cut in 2D) exactly on the reconstructed curve.
+        // 2 points per direction: Q1 test-function gradients vary
+        // linearly in a cell, and the geometric error of the Q1 zero level
+        // set (O(h^2)) dominates the quadrature error.
         cut_values = std::make_unique<NonMatching::FEValues<dim>>(
           fe_collection,
           QGauss<1>(2),
