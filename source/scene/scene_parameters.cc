@@ -258,6 +258,8 @@ namespace levelsinter
     }
     prm.leave_subsection();
 
+    ViscousFlowParameters::declare_parameters(prm);
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Directory",
@@ -398,6 +400,8 @@ namespace levelsinter
            "a CFL number or a fixed 'Time step' must be given (both are 0)");
     prm.leave_subsection();
 
+    viscous_flow.parse_parameters(prm, d);
+
     prm.enter_subsection("Velocity");
     velocity.type = prm.get("Type");
     // Vectors are read only where the chosen type uses them, so that the
@@ -423,7 +427,10 @@ namespace levelsinter
                    velocity.rotation_axis[1],
                    velocity.rotation_axis[2]) == 0)
       fail("Velocity/Rotation axis", "must not be the zero vector");
-    if (velocity.type == "none" && time.time_step == 0)
+    // A mechanism that computes a velocity (viscous flow) lets the CFL
+    // number choose the step.
+    if (velocity.type == "none" && time.time_step == 0 &&
+        !viscous_flow.enabled)
       {
         prm.leave_subsection();
         fail("Time/Time step",

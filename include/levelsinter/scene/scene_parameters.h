@@ -3,6 +3,8 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <levelsinter/scene/viscous_flow_parameters.h>
+
 #include <string>
 #include <vector>
 
@@ -99,5 +101,7 @@ namespace levelsinter
       unsigned int metrics_interval  = 1;
       unsigned int progress_interval = 10;
     } output;
+
+    ViscousFlowParameters viscous_flow;
   };
 } // namespace levelsinter

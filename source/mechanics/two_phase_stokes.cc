@@ -1,0 +1,515 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/hp/fe_collection.h>
+
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <deal.II/non_matching/fe_values.h>
+#include <deal.II/non_matching/mesh_classifier.h>
+
+#include <deal.II/numerics/vector_tools.h>
+
+#include <levelsinter/level_set/smoothed_heaviside.h>
+#include <levelsinter/mechanics/block_schur_preconditioner.h>
+#include <levelsinter/mechanics/two_phase_stokes.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  template <int dim>
+  TwoPhaseStokes<dim>::TwoPhaseStokes(const Triangulation<dim> &tria,
+                                      const Settings           &settings,
+                                      const PhaseLaw           &phase_law)
+    : settings(settings)
+    , phase_law(phase_law)
+    , finite_element(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1)
+    , dofs(tria)
+  {}
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::setup_dofs()
+  {
+    dofs.distribute_dofs(finite_element);
+    std::vector<unsigned int> block_of_component(dim + 1, 0);
+    block_of_component[dim] = 1;
+    DoFRenumbering::component_wise(dofs, block_of_component);
+    const auto per_block =
+      DoFTools::count_dofs_per_fe_block(dofs, block_of_component);
+    const types::global_dof_index n_v = per_block[0], n_p = per_block[1];
+
+    owned_dofs    = dofs.locally_owned_dofs();
+    relevant_dofs = DoFTools::extract_locally_relevant_dofs(dofs);
+    owned_partitioning   = {owned_dofs.get_view(0, n_v),
+                          owned_dofs.get_view(n_v, n_v + n_p)};
+    relevant_partitioning = {relevant_dofs.get_view(0, n_v),
+                             relevant_dofs.get_view(n_v, n_v + n_p)};
+    make_constraints();
+
+    const MPI_Comm comm = dofs.get_communicator();
+    if (settings.direct_solver)
+      {
+        DynamicSparsityPattern dsp(relevant_dofs);
+        DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   owned_dofs,
+                                                   comm,
+                                                   relevant_dofs);
+        monolithic_matrix.reinit(owned_dofs, owned_dofs, dsp, comm);
+        monolithic_rhs.reinit(owned_dofs, comm);
+      }
+    else
+      {
+        // eps(v):eps(w) couples all velocity components; ASGS couples p-p.
+        BlockDynamicSparsityPattern dsp(relevant_partitioning);
+        DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   owned_dofs,
+                                                   comm,
+                                                   relevant_dofs);
+        system_matrix.reinit(owned_partitioning, dsp, comm);
+
+        Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
+        for (unsigned int c = 0; c < dim + 1; ++c)
+          for (unsigned int d = 0; d < dim + 1; ++d)
+            coupling[c][d] =
+              (c == dim && d == dim) ? DoFTools::always : DoFTools::none;
+        BlockDynamicSparsityPattern schur_dsp(relevant_partitioning);
+        DoFTools::make_sparsity_pattern(
+          dofs, coupling, schur_dsp, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(schur_dsp,
+                                                   owned_dofs,
+                                                   comm,
+                                                   relevant_dofs);
+        schur_matrix.reinit(owned_partitioning, schur_dsp, comm);
+      }
+    system_rhs.reinit(owned_partitioning, comm);
+    ghosted_solution.reinit(owned_partitioning, relevant_partitioning, comm);
+  }
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::make_constraints()
+  {
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    // Symmetry plane = box face with zero normal velocity; the faces are
+    // axis-aligned (colorized ids 2k, 2k+1 have normal e_k), so this is a
+    // homogeneous Dirichlet condition on one component.
+    for (const types::boundary_id id : settings.symmetry_boundaries)
+      {
+        ComponentMask normal(dim + 1, false);
+        normal.set(id / 2, true);
+        VectorTools::interpolate_boundary_values(
+          dofs, id, Functions::ZeroFunction<dim>(dim + 1), constraints, normal);
+      }
+    pin_rigid_body_modes();
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::pin_rigid_body_modes()
+  {
+    // A rigid motion survives the symmetry planes if its velocity is
+    // tangential to all of them: a translation along e_k iff no plane has
+    // normal e_k; a rotation about e_k iff every plane has normal e_k (a
+    // plane with another normal sees a nonzero normal velocity).
+    std::vector<bool> plane_normal_to(dim, false);
+    for (const types::boundary_id id : settings.symmetry_boundaries)
+      plane_normal_to[id / 2] = true;
+    const auto all_planes_normal_to = [&](const unsigned int k) {
+      for (unsigned int d = 0; d < dim; ++d)
+        if (d != k && plane_normal_to[d])
+          return false;
+      return true;
+    };
+
+    // Pin what survives at box corners: with the lower corner a, b = a +
+    // L_x e_x and c = a + L_y e_y, v_k(a) = 0 removes the translation along
+    // e_k, v_y(b) = 0 the rotation about z, v_z(b) = 0 the one about y and
+    // v_z(c) = 0 the one about x. The capillary load is self-equilibrated
+    // (see the class documentation), so the pins carry no reaction: they
+    // only select one member of the family of solutions.
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = -std::numeric_limits<double>::max();
+      }
+    const auto &tria = dofs.get_triangulation();
+    for (const auto &vertex : tria.get_vertices())
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min(lower[d], vertex[d]);
+          upper[d] = std::max(upper[d], vertex[d]);
+        }
+    Point<dim> b = lower, c = lower;
+    b[0]         = upper[0];
+    c[1]         = upper[1];
+    std::vector<std::pair<Point<dim>, unsigned int>> pins;
+    for (unsigned int k = 0; k < dim; ++k)
+      if (!plane_normal_to[k])
+        pins.emplace_back(lower, k);
+    if (dim == 2 && settings.symmetry_boundaries.empty())
+      pins.emplace_back(b, 1);
+    if (dim == 3)
+      {
+        if (all_planes_normal_to(2))
+          pins.emplace_back(b, 1);
+        if (all_planes_normal_to(1))
+          pins.emplace_back(b, 2);
+        if (all_planes_normal_to(0))
+          pins.emplace_back(c, 2);
+      }
+    const double tolerance = 1e-10 * lower.distance(upper);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          for (const auto &[point, component] : pins)
+            if (cell->vertex(v).distance(point) < tolerance)
+              {
+                const auto index = cell->vertex_dof_index(v, component);
+                if (constraints.can_store_line(index) &&
+                    !constraints.is_constrained(index))
+                  constraints.add_line(index);
+              }
+  }
+
+  template <int dim>
+  template <typename MatrixType, typename VectorType>
+  void
+  TwoPhaseStokes<dim>::assemble_into(const LevelSetField<dim> &alpha,
+                                     MatrixType               &matrix,
+                                     VectorType               &rhs)
+  {
+    matrix = 0;
+    rhs    = 0;
+    if (!settings.direct_solver)
+      schur_matrix = 0;
+
+    const double            E = settings.interface_half_width;
+    const SmoothedHeaviside heaviside(E);
+    const double            gamma = settings.surface_tension;
+    const bool              csf =
+      settings.form == SurfaceTensionForm::csf && gamma != 0;
+    const bool sharp = settings.form == SurfaceTensionForm::sharp && gamma != 0;
+
+    // Three Gauss points per direction: the smoothed coefficients and the
+    // Dirac vary across a cell of the band.
+    const QGauss<dim>     quadrature(3);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         values(finite_element,
+                         quadrature,
+                         update_values | update_gradients |
+                           update_JxW_values);
+    FEValues<dim> level_set_values(alpha.fe(),
+                                   quadrature,
+                                   update_values | update_gradients);
+    FEFaceValues<dim> face_values(finite_element,
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+
+    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
+    std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
+    const hp::FECollection<dim>                       fe_collection(
+      finite_element);
+    if (sharp)
+      {
+        classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
+          alpha.dof_handler(), alpha.alpha());
+        classifier->reclassify();
+        NonMatching::RegionUpdateFlags flags;
+        flags.surface =
+          update_gradients | update_JxW_values | update_normal_vectors;
+        // 2 points per direction: Q1 test-function gradients vary
+        // linearly in a cell, and the geometric error of the Q1 zero level
+        // set (O(h^2)) dominates the quadrature error.
+        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
+          fe_collection,
+          QGauss<1>(2),
+          flags,
+          *classifier,
+          alpha.dof_handler(),
+          alpha.alpha());
+      }
+
+    const FEValuesExtractors::Vector velocity(0);
+    const FEValuesExtractors::Scalar pressure(dim);
+    const unsigned int               n = finite_element.dofs_per_cell;
+    FullMatrix<double>               cell_matrix(n, n), cell_schur(n, n);
+    Vector<double>                   cell_rhs(n);
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<double>                  alpha_q(quadrature.size());
+    std::vector<Tensor<1, dim>>          grad_alpha_q(quadrature.size());
+    std::vector<SymmetricTensor<2, dim>> eps(n);
+    std::vector<Tensor<2, dim>>          grad_w(n);
+    std::vector<double>                  div(n), q(n);
+    std::vector<Tensor<1, dim>>          grad_q(n);
+    std::vector<unsigned int>            component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = finite_element.system_to_component_index(i).first;
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell_matrix = 0;
+          cell_schur  = 0;
+          cell_rhs    = 0;
+          values.reinit(cell);
+          const typename DoFHandler<dim>::active_cell_iterator ls_cell(
+            &dofs.get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &alpha.dof_handler());
+          level_set_values.reinit(ls_cell);
+          level_set_values.get_function_values(alpha.alpha(), alpha_q);
+          level_set_values.get_function_gradients(alpha.alpha(),
+                                                  grad_alpha_q);
+          const double h = cell->diameter() / std::sqrt(double(dim));
+
+          for (const unsigned int k : values.quadrature_point_indices())
+            {
+              const PhaseFractions fractions{
+                heaviside.solid_fraction(alpha_q[k]),
+                1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
+              const PhaseCoefficients law = phase_law.coefficients(fractions);
+              const double tau = settings.stabilisation_constant * law.a2 *
+                                 h * h / law.a1;
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  eps[i]    = values[velocity].symmetric_gradient(i, k);
+                  grad_w[i] = values[velocity].gradient(i, k);
+                  div[i]    = values[velocity].divergence(i, k);
+                  q[i]      = values[pressure].value(i, k);
+                  grad_q[i] = values[pressure].gradient(i, k);
+                }
+              const double JxW = values.JxW(k);
+              // Each shape function of the FESystem has one component:
+              // only velocity-velocity (eps:eps), velocity-pressure (div q)
+              // and pressure-pressure pairs are nonzero. The operator is
+              // symmetric apart from a2, so the lower triangle of the
+              // same-type pairs is copied afterwards.
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const bool i_pressure = component[i] == dim;
+                  for (unsigned int j = i; j < n; ++j)
+                    {
+                      const bool j_pressure = component[j] == dim;
+                      if (!i_pressure && !j_pressure)
+                        cell_matrix(i, j) += law.a1 * eps[i] * eps[j] * JxW;
+                      else if (i_pressure && j_pressure)
+                        {
+                          cell_matrix(i, j) -=
+                            (law.compressibility * q[i] * q[j] +
+                             tau * grad_q[i] * grad_q[j]) *
+                            JxW;
+                          // Schur approximation M_{1/eta} + C (eta = a1/2).
+                          cell_schur(i, j) +=
+                            ((2 / law.a1 + law.compressibility) * q[i] *
+                               q[j] +
+                             tau * grad_q[i] * grad_q[j]) *
+                            JxW;
+                        }
+                      else
+                        {
+                          // a2 weighs p in the momentum equation only (the
+                          // elastic law has a2 != 1): both entries here.
+                          const unsigned int v = i_pressure ? j : i;
+                          const unsigned int p = i_pressure ? i : j;
+                          cell_matrix(v, p) -= law.a2 * div[v] * q[p] * JxW;
+                          cell_matrix(p, v) -= div[v] * q[p] * JxW;
+                        }
+                    }
+                }
+
+              if (csf)
+                {
+                  // dS -> delta(alpha) |grad alpha| dV: the co-area formula
+                  // makes the smeared integral the average of the sharp one
+                  // over the level sets |alpha| < E.
+                  const double norm = grad_alpha_q[k].norm();
+                  const double weight =
+                    heaviside.dirac(alpha_q[k]) * norm * JxW;
+                  if (weight > 0)
+                    {
+                      const Tensor<1, dim> normal = grad_alpha_q[k] / norm;
+                      const Tensor<2, dim> projector =
+                        unit_symmetric_tensor<dim>() -
+                        outer_product(normal, normal);
+                      for (unsigned int i = 0; i < n; ++i)
+                        cell_rhs(i) -=
+                          gamma * scalar_product(projector, grad_w[i]) *
+                          weight;
+                    }
+                }
+            }
+
+          if (sharp)
+            {
+              cut_values->reinit(cell);
+              if (const auto &surface = cut_values->get_surface_fe_values())
+                for (const unsigned int k :
+                     surface->quadrature_point_indices())
+                  {
+                    const Tensor<1, dim> normal = surface->normal_vector(k);
+                    const Tensor<2, dim> projector =
+                      unit_symmetric_tensor<dim>() -
+                      outer_product(normal, normal);
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_rhs(i) -=
+                        gamma *
+                        scalar_product(projector,
+                                       (*surface)[velocity].gradient(i, k)) *
+                        surface->JxW(k);
+                  }
+            }
+
+          // Free faces: traction -p_ext n.
+          if (settings.external_pressure != 0)
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() &&
+                  std::find(settings.symmetry_boundaries.begin(),
+                            settings.symmetry_boundaries.end(),
+                            face->boundary_id()) ==
+                    settings.symmetry_boundaries.end())
+                {
+                  face_values.reinit(cell, face);
+                  for (const unsigned int k :
+                       face_values.quadrature_point_indices())
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_rhs(i) -= settings.external_pressure *
+                                     (face_values[velocity].value(i, k) *
+                                      face_values.normal_vector(k)) *
+                                     face_values.JxW(k);
+                }
+
+          for (unsigned int i = 0; i < n; ++i)
+            for (unsigned int j = 0; j < i; ++j)
+              if ((component[i] == dim) == (component[j] == dim))
+                {
+                  cell_matrix(i, j) = cell_matrix(j, i);
+                  cell_schur(i, j)  = cell_schur(j, i);
+                }
+          cell->get_dof_indices(indices);
+          constraints.distribute_local_to_global(
+            cell_matrix, cell_rhs, indices, matrix, rhs);
+          if (!settings.direct_solver)
+            constraints.distribute_local_to_global(cell_schur,
+                                                   indices,
+                                                   schur_matrix);
+        }
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    if (!settings.direct_solver)
+      schur_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::assemble(const LevelSetField<dim> &alpha)
+  {
+    if (settings.direct_solver)
+      assemble_into(alpha, monolithic_matrix, monolithic_rhs);
+    else
+      assemble_into(alpha, system_matrix, system_rhs);
+  }
+
+  template <int dim>
+  unsigned int
+  TwoPhaseStokes<dim>::solve()
+  {
+    const MPI_Comm comm = dofs.get_communicator();
+    BlockVector    owned_solution(owned_partitioning, comm);
+    unsigned int   iterations = 0;
+
+    if (settings.direct_solver)
+      {
+        TrilinosWrappers::MPI::Vector x(owned_dofs, comm);
+        SolverControl                 control(1, 0);
+        TrilinosWrappers::SolverDirect direct(control);
+        direct.solve(monolithic_matrix, x, monolithic_rhs);
+        for (const auto i : owned_dofs)
+          owned_solution(i) = x(i);
+        owned_solution.compress(VectorOperation::insert);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG velocity_amg, schur_amg;
+        {
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          ComponentMask velocity_mask(dim + 1, true);
+          velocity_mask.set(dim, false);
+          DoFTools::extract_constant_modes(dofs,
+                                           velocity_mask,
+                                           data.constant_modes);
+          // Keep only the velocity rows (the block's numbering).
+          for (auto &mode : data.constant_modes)
+            mode.resize(owned_partitioning[0].n_elements());
+          data.elliptic              = true;
+          data.higher_order_elements = false;
+          data.smoother_sweeps       = 2;
+          data.aggregation_threshold = 0.02;
+          velocity_amg.initialize(system_matrix.block(0, 0), data);
+        }
+        {
+          TrilinosWrappers::PreconditionAMG::AdditionalData data;
+          data.elliptic = true;
+          schur_amg.initialize(schur_matrix.block(1, 1), data);
+        }
+        const BlockSchurPreconditioner preconditioner(system_matrix,
+                                                      velocity_amg,
+                                                      schur_amg);
+        SolverControl control(settings.max_iterations,
+                              settings.tolerance * system_rhs.l2_norm());
+        SolverFGMRES<BlockVector> solver(
+          control, SolverFGMRES<BlockVector>::AdditionalData(100));
+        constraints.set_zero(owned_solution);
+        try
+          {
+            if (system_rhs.l2_norm() > 0)
+              solver.solve(system_matrix,
+                           owned_solution,
+                           system_rhs,
+                           preconditioner);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            // A diagnosis instead of deal.II's stack trace.
+            std::ostringstream message;
+            message << "viscous flow: FGMRES did not reach the relative "
+                    << "residual " << settings.tolerance << " in "
+                    << e.last_step << " iterations (residual "
+                    << e.last_residual / system_rhs.l2_norm()
+                    << "); raise 'Viscous flow/Maximum solver iterations' "
+                    << "or use 'Solver = direct' for a small 2D scene";
+            throw std::runtime_error(message.str());
+          }
+        iterations = control.last_step();
+      }
+    constraints.distribute(owned_solution);
+    ghosted_solution = owned_solution;
+    return iterations;
+  }
+
+  template class TwoPhaseStokes<2>;
+  template class TwoPhaseStokes<3>;
+} // namespace levelsinter

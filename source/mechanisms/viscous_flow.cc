@@ -1,0 +1,110 @@
+#include <deal.II/grid/grid_tools.h>
+
+#include <levelsinter/mechanisms/viscous_flow.h>
+
+#include <cmath>
+#include <limits>
+
+namespace levelsinter
+{
+  template <int dim>
+  ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters,
+                                TimerOutput                 &timer)
+    : parameters(parameters)
+    , timer(timer)
+    , phases(parameters.solid_viscosity,
+             parameters.fluid_viscosity,
+             parameters.fluid_compressibility)
+  {}
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::setup(const LevelSetField<dim> &alpha)
+  {
+    const auto &tria = alpha.dof_handler().get_triangulation();
+    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    typename TwoPhaseStokes<dim>::Settings settings;
+    settings.surface_tension = parameters.surface_tension;
+    settings.form =
+      parameters.surface_tension_form == "csf" ?
+        TwoPhaseStokes<dim>::SurfaceTensionForm::csf :
+        TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
+    settings.interface_half_width   = parameters.interface_half_width * h_min;
+    settings.stabilisation_constant = parameters.stabilisation_constant;
+    settings.external_pressure      = parameters.external_pressure;
+    settings.symmetry_boundaries    = parameters.symmetry_boundaries;
+    settings.direct_solver          = parameters.direct_solver;
+    settings.tolerance              = parameters.solver_tolerance;
+    settings.max_iterations         = parameters.max_iterations;
+    // The DoFHandler is tied to the triangulation, which the time loop
+    // builds after the mechanisms: create the operator on first use.
+    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, phases);
+    operator_->setup_dofs();
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::add_velocity(const LevelSetField<dim> &alpha,
+                                 const double,
+                                 const double,
+                                 VelocityField<dim> &velocity)
+  {
+    {
+      TimerOutput::Scope scope(timer, "viscous flow: assembly");
+      operator_->assemble(alpha);
+    }
+    {
+      TimerOutput::Scope scope(timer, "viscous flow: solve");
+      last_iterations = operator_->solve();
+    }
+
+    // Same mesh, Q1 in both spaces: copy the nodal velocity cell by cell
+    // from the Stokes numbering to the VelocityField numbering.
+    const auto &stokes_fe   = operator_->fe();
+    const auto &velocity_fe = velocity.fe();
+    const auto &solution    = operator_->solution();
+    TrilinosWrappers::MPI::Vector increment(
+      velocity.locally_owned(),
+      velocity.dof_handler().get_communicator());
+    std::vector<types::global_dof_index> stokes_indices(
+      stokes_fe.dofs_per_cell),
+      velocity_indices(velocity_fe.dofs_per_cell);
+    for (const auto &cell : operator_->dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(stokes_indices);
+          const typename DoFHandler<dim>::active_cell_iterator velocity_cell(
+            &cell->get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &velocity.dof_handler());
+          velocity_cell->get_dof_indices(velocity_indices);
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const auto to =
+                  velocity_indices[velocity_fe.component_to_system_index(c,
+                                                                         v)];
+                if (velocity.locally_owned().is_element(to))
+                  increment(to) = solution(
+                    stokes_indices[stokes_fe.component_to_system_index(c, v)]);
+              }
+        }
+    increment.compress(VectorOperation::insert);
+    velocity.add(increment);
+  }
+
+  template <int dim>
+  double
+  ViscousFlow<dim>::time_step_limit(const LevelSetField<dim> &) const
+  {
+    if (parameters.capillary_time_step_factor == 0 ||
+        parameters.surface_tension == 0)
+      return std::numeric_limits<double>::infinity();
+    return parameters.capillary_time_step_factor *
+           parameters.solid_viscosity * h_min / parameters.surface_tension;
+  }
+
+  template class ViscousFlow<2>;
+  template class ViscousFlow<3>;
+} // namespace levelsinter

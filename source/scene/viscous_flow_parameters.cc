@@ -1,0 +1,145 @@
+#include <deal.II/base/utilities.h>
+
+#include <levelsinter/scene/viscous_flow_parameters.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    [[noreturn]] void
+    fail(const std::string &entry, const std::string &message)
+    {
+      throw std::runtime_error("entry 'Viscous flow/" + entry + "': " +
+                               message);
+    }
+  } // namespace
+
+  void
+  ViscousFlowParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Viscous flow");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Solve two-phase Stokes with surface tension every "
+                        "step and move the interface with its velocity.");
+      prm.declare_entry("Surface tension",
+                        "1",
+                        Patterns::Double(0),
+                        "gamma on alpha = 0 (N/m).");
+      prm.declare_entry("Solid viscosity",
+                        "1",
+                        Patterns::Double(0),
+                        "eta_s of the particles (Pa s).");
+      prm.declare_entry("Fluid viscosity",
+                        "1e-3",
+                        Patterns::Double(0),
+                        "eta_f of the atmosphere (Pa s); eta_f/eta_s down to "
+                        "1e-6.");
+      prm.declare_entry("Fluid compressibility",
+                        "1",
+                        Patterns::Double(0),
+                        "c in div v = -c p / eta_f in the atmosphere (its bulk "
+                        "viscosity is eta_f / c); lets closed pores shrink. "
+                        "0: incompressible atmosphere.");
+      prm.declare_entry("Surface tension form",
+                        "sharp",
+                        Patterns::Selection("csf|sharp"),
+                        "Tensorial form gamma (I - n n) : grad w (Eq. 108), "
+                        "integrated with the regularised Dirac (csf, Eq. "
+                        "100-104) or on the zero level set with cut-cell "
+                        "quadrature (sharp).");
+      prm.declare_entry("Interface half width",
+                        "1.5",
+                        Patterns::Double(0),
+                        "E of the smoothed Heaviside and Dirac (Eq. 102-104), "
+                        "in finest-cell sizes h_min.");
+      prm.declare_entry("Stabilisation constant",
+                        "0.1",
+                        Patterns::Double(0),
+                        "c in the ASGS parameter tau_K = c a2 h_K^2 / a1 "
+                        "(Eq. 99 has c = 1). The smearing of the Laplace "
+                        "jump and the solid-volume drift grow with c, the "
+                        "solver iterations shrink (doc/validation.md).");
+      prm.declare_entry("External pressure",
+                        "0",
+                        Patterns::Double(),
+                        "p_ext on the free box faces (traction -p_ext n).");
+      prm.declare_entry("Symmetry planes",
+                        "",
+                        Patterns::MultipleSelection("x-|x+|y-|y+|z-|z+"),
+                        "Box faces with zero normal velocity. Rigid-body "
+                        "modes the planes leave free are pinned at box "
+                        "corners.");
+      prm.declare_entry("Solver",
+                        "iterative",
+                        Patterns::Selection("iterative|direct"),
+                        "iterative: FGMRES with the block preconditioner "
+                        "(AMG + viscosity-weighted pressure mass); direct: "
+                        "Trilinos Amesos, for small 2D problems.");
+      prm.declare_entry("Solver tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "Relative residual at which FGMRES stops.");
+      prm.declare_entry("Maximum solver iterations",
+                        "500",
+                        Patterns::Integer(1),
+                        "FGMRES iteration limit; reaching it stops the run.");
+      prm.declare_entry("Capillary time step factor",
+                        "1",
+                        Patterns::Double(0),
+                        "c in the explicit capillary limit dt <= c eta_s "
+                        "h_min / gamma; 0 disables it.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  ViscousFlowParameters::parse_parameters(ParameterHandler  &prm,
+                                          const unsigned int dimension)
+  {
+    prm.enter_subsection("Viscous flow");
+    enabled                = prm.get_bool("Enabled");
+    surface_tension        = prm.get_double("Surface tension");
+    solid_viscosity        = prm.get_double("Solid viscosity");
+    fluid_viscosity        = prm.get_double("Fluid viscosity");
+    fluid_compressibility  = prm.get_double("Fluid compressibility");
+    surface_tension_form   = prm.get("Surface tension form");
+    interface_half_width   = prm.get_double("Interface half width");
+    stabilisation_constant = prm.get_double("Stabilisation constant");
+    external_pressure      = prm.get_double("External pressure");
+    direct_solver          = prm.get("Solver") == "direct";
+    solver_tolerance       = prm.get_double("Solver tolerance");
+    max_iterations         = prm.get_integer("Maximum solver iterations");
+    capillary_time_step_factor = prm.get_double("Capillary time step factor");
+    const std::vector<std::string> faces = {"x-", "x+", "y-", "y+", "z-", "z+"};
+    symmetry_boundaries.clear();
+    for (const auto &name :
+         Utilities::split_string_list(prm.get("Symmetry planes"), ','))
+      {
+        const auto id = std::find(faces.begin(), faces.end(), name) -
+                        faces.begin();
+        if (id >= 2 * int(dimension))
+          fail("Symmetry planes",
+               "'" + name + "' is not a face of a " +
+                 std::to_string(dimension) + "D box");
+        symmetry_boundaries.push_back(id);
+      }
+    prm.leave_subsection();
+
+    if (!enabled)
+      return;
+    const std::vector<std::pair<double, std::string>> positive = {
+      {solid_viscosity, "Solid viscosity"},
+      {fluid_viscosity, "Fluid viscosity"},
+      {interface_half_width, "Interface half width"},
+      {stabilisation_constant, "Stabilisation constant"}};
+    for (const auto &[value, entry] : positive)
+      if (value <= 0)
+        fail(entry, "must be positive");
+  }
+} // namespace levelsinter
