@@ -4,10 +4,12 @@
 usage: plot_work_precision.py OUT.png LABEL=FILE.csv [LABEL=FILE.csv ...]
 
 Each CSV is a table written by `levelsinter_validation transport ... --csv`
-(columns level, h, wall_time, volume_error, shape_error, ...). The left
+(columns level, h, cpu_time, volume_error, shape_error, ...). The left
 panel shows the relative volume (area) error, the right one the shape error
-(mean distance of the interface from the exact one), both against the wall
-time of the run, with the finest cell size written next to each point.
+(mean distance of the interface from the exact one), both against the CPU
+time of the run (summed over the ranks; unlike the wall time it does not
+depend on other jobs sharing the machine), with the finest cell size
+written next to each point.
 """
 import csv
 import sys
@@ -25,7 +27,7 @@ for item in sys.argv[2:]:
     label, path = item.split("=", 1)
     with open(path) as f:
         rows = list(csv.DictReader(f))
-    wall = [float(r["wall_time"]) for r in rows]
+    wall = [float(r["cpu_time"]) for r in rows]
     for ax, column in zip(axes, ["volume_error", "shape_error"]):
         values = [float(r[column]) for r in rows]
         ax.loglog(wall, values, "o-", label=label)
@@ -35,7 +37,7 @@ for item in sys.argv[2:]:
 axes[0].set_ylabel("relative volume (area) error")
 axes[1].set_ylabel("shape error (mean distance)")
 for ax in axes:
-    ax.set_xlabel("wall time (s)")
+    ax.set_xlabel("CPU time (s)")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=8)
 fig.tight_layout()

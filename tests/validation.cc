@@ -215,7 +215,7 @@ namespace
   transport(const std::string &scene_file, const Options &options)
   {
     const SceneParameters base = read_scene(scene_file, {});
-    Table table({"level", "h", "cells", "dofs", "steps", "wall_time",
+    Table table({"level", "h", "cells", "dofs", "steps", "wall_time", "cpu_time",
                  "volume_error", "shape_error", "shape_error/h",
                  "max_distance/h", "iterations"},
                 options.csv);
@@ -236,6 +236,7 @@ namespace
         table.add({double(level), h, double(summary.max_cells),
                    double(summary.max_dofs), double(summary.steps),
                    summary.wall_time,
+                   summary.cpu_time,
                    std::abs(measured.solid_volume - volume) / volume,
                    shape.symmetric_difference / area,
                    shape.symmetric_difference / area / h,

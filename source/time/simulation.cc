@@ -9,6 +9,7 @@
 #include <levelsinter/time/simulation.h>
 
 #include <cmath>
+#include <ctime>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -278,7 +279,8 @@ namespace levelsinter
   typename Simulation<dim>::Summary
   Simulation<dim>::run()
   {
-    start = std::chrono::steady_clock::now();
+    start                  = std::chrono::steady_clock::now();
+    const std::clock_t cpu_start = std::clock();
     if (!initialised)
       initialise();
 
@@ -333,6 +335,10 @@ namespace levelsinter
     summary.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
+    // CPU time of this process summed over the ranks: unlike the wall time
+    // it does not grow when other jobs share the cores.
+    summary.cpu_time = Utilities::MPI::sum(
+      double(std::clock() - cpu_start) / CLOCKS_PER_SEC, comm);
     summary.mean_iterations = step > 0 ? double(total_iterations) / step : 0;
     return summary;
   }

@@ -37,6 +37,7 @@ namespace levelsinter
       unsigned int steps                = 0;
       double       time                 = 0;
       double       wall_time            = 0;
+      double       cpu_time             = 0; // summed over the ranks
       unsigned int max_cells            = 0;
       unsigned int max_dofs             = 0;
       double       mean_iterations      = 0;
