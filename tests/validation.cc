@@ -19,6 +19,8 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include "study_table.h"
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -32,123 +34,22 @@ using namespace levelsinter;
 
 namespace
 {
-  struct Options
+  using study::check;
+  using study::Table;
+
+  struct Options : study::Options
   {
-    std::vector<unsigned int>     levels;
-    std::map<std::string, double> limits; // --max-volume-error 1e-3 ...
-    std::string                   csv;
+    std::vector<unsigned int> levels;
   };
 
+  // LEVELS [--csv FILE] [--NAME VALUE ...] from args[first] on.
   Options
   parse_options(const std::vector<std::string> &args, const unsigned int first)
   {
     Options o;
-    for (const auto v : Utilities::string_to_int(
-           Utilities::split_string_list(args.at(first), ',')))
-      o.levels.push_back(v);
-    for (unsigned int i = first + 1; i + 1 < args.size(); i += 2)
-      {
-        if (args[i] == "--csv")
-          o.csv = args[i + 1];
-        else if (args[i].rfind("--", 0) == 0)
-          o.limits[args[i].substr(2)] = std::stod(args[i + 1]);
-        else
-          throw std::runtime_error("unexpected argument " + args[i]);
-      }
+    static_cast<study::Options &>(o) = study::parse_options(args, first + 1);
+    o.levels                         = study::parse_levels(args.at(first));
     return o;
-  }
-
-  // A table whose rows are written to stdout and, optionally, to CSV.
-  class Table
-  {
-  public:
-    Table(const std::vector<std::string> &columns, const std::string &csv)
-      : columns(columns)
-      , root(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    {
-      if (root && !csv.empty())
-        {
-          file.open(csv);
-          for (unsigned int i = 0; i < columns.size(); ++i)
-            file << (i ? "," : "") << columns[i];
-          file << "\n";
-        }
-      if (root)
-        {
-          for (const auto &c : columns)
-            std::cout << std::setw(14) << c;
-          std::cout << "\n";
-        }
-    }
-
-    void
-    add(const std::vector<double> &row)
-    {
-      rows.push_back(row);
-      if (!root)
-        return;
-      for (unsigned int i = 0; i < row.size(); ++i)
-        {
-          std::cout << std::setw(14) << std::setprecision(5) << row[i];
-          if (file.is_open())
-            file << (i ? "," : "") << std::setprecision(10) << row[i];
-        }
-      std::cout << "\n";
-      if (file.is_open())
-        file << "\n";
-    }
-
-    // Observed order between the two finest rows of column `c`; NaN with a
-    // single resolution (a check on it then fails if it was asked for).
-    double
-    order(const std::string &c) const
-    {
-      if (rows.size() < 2)
-        return std::numeric_limits<double>::quiet_NaN();
-      const unsigned int k = index(c);
-      const auto        &a = rows[rows.size() - 2];
-      const auto        &b = rows.back();
-      return std::log(a[k] / b[k]) / std::log(a[index("h")] / b[index("h")]);
-    }
-
-    double
-    finest(const std::string &c) const
-    {
-      return rows.back()[index(c)];
-    }
-
-  private:
-    unsigned int
-    index(const std::string &c) const
-    {
-      return std::find(columns.begin(), columns.end(), c) - columns.begin();
-    }
-
-    std::vector<std::string>         columns;
-    std::vector<std::vector<double>> rows;
-    std::ofstream                    file;
-    bool                             root;
-  };
-
-  // Compare a measured value with a limit, print the verdict, count failures.
-  unsigned int failures = 0;
-  void
-  check(const std::string &what,
-        const double       value,
-        const Options     &options,
-        const std::string &limit_name,
-        const bool         is_upper_bound)
-  {
-    const auto it = options.limits.find(limit_name);
-    if (it == options.limits.end())
-      return;
-    const bool ok =
-      is_upper_bound ? (value <= it->second) : (value >= it->second);
-    if (!ok)
-      ++failures;
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cout << (ok ? "PASS " : "FAIL ") << what << " = " << value
-                << (is_upper_bound ? " <= " : " >= ") << it->second << "\n";
   }
 
   // Resolution-dependent settings: filter, band and step scale with the
@@ -373,5 +274,5 @@ main(int argc, char **argv)
       std::cerr << "levelsinter_validation: " << e.what() << "\n";
       return 2;
     }
-  return failures == 0 ? 0 : 1;
+  return study::failures() == 0 ? 0 : 1;
 }

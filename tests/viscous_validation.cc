@@ -27,6 +27,8 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include "study_table.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -44,97 +46,10 @@ namespace
 {
   bool root = true; // set in main() once MPI is up
 
-  struct Options
-  {
-    std::map<std::string, double> limits;
-    std::string                   csv;
-    // --set "Section/Entry=value": scene overrides for every run.
-    std::vector<std::pair<std::string, std::string>> overrides;
-  };
-
-  Options
-  parse_options(const std::vector<std::string> &args, const unsigned int first)
-  {
-    Options o;
-    for (unsigned int i = first; i + 1 < args.size(); i += 2)
-      {
-        if (args[i] == "--csv")
-          o.csv = args[i + 1];
-        else if (args[i] == "--set")
-          {
-            const auto eq = args[i + 1].find('=');
-            o.overrides.emplace_back(args[i + 1].substr(0, eq),
-                                     args[i + 1].substr(eq + 1));
-          }
-        else if (args[i].rfind("--", 0) == 0)
-          o.limits[args[i].substr(2)] = std::stod(args[i + 1]);
-        else
-          throw std::runtime_error("unexpected argument " + args[i]);
-      }
-    return o;
-  }
-
-  unsigned int failures = 0;
-
-  void
-  check(const std::string &what,
-        const double       value,
-        const Options     &options,
-        const std::string &limit_name)
-  {
-    const auto it = options.limits.find(limit_name);
-    if (it == options.limits.end())
-      return;
-    const bool ok = value <= it->second && std::isfinite(value);
-    failures += !ok;
-    if (root)
-      std::cout << (ok ? "PASS " : "FAIL ") << what << " = " << value
-                << " <= " << it->second << "\n";
-  }
-
-  // Rows to stdout and, optionally, CSV.
-  class Table
-  {
-  public:
-    Table(const std::vector<std::string> &columns, const std::string &csv)
-    {
-      if (!root)
-        return;
-      if (!csv.empty())
-        {
-          file.open(csv);
-          for (unsigned int i = 0; i < columns.size(); ++i)
-            file << (i ? "," : "") << columns[i];
-          file << "\n";
-        }
-      for (const auto &c : columns)
-        std::cout << std::setw(std::max<int>(12, c.size() + 2)) << c;
-      std::cout << "\n";
-      widths.clear();
-      for (const auto &c : columns)
-        widths.push_back(std::max<int>(12, c.size() + 2));
-    }
-
-    void
-    add(const std::vector<double> &row)
-    {
-      if (!root)
-        return;
-      for (unsigned int i = 0; i < row.size(); ++i)
-        {
-          std::cout << std::setw(widths[i]) << std::setprecision(4) << row[i];
-          if (file.is_open())
-            file << (i ? "," : "") << std::setprecision(10) << row[i];
-        }
-      std::cout << std::endl;
-      if (file.is_open())
-        file << "\n";
-    }
-
-  private:
-    std::vector<int> widths;
-    std::ofstream    file;
-  };
+  using study::check;
+  using study::Options;
+  using study::parse_options;
+  using study::Table;
 
   std::string
   output_directory(const std::string &name)
@@ -594,5 +509,5 @@ main(int argc, char **argv)
       std::cerr << "error: " << e.what() << std::endl;
       return 1;
     }
-  return failures == 0 ? 0 : 1;
+  return study::failures() == 0 ? 0 : 1;
 }
