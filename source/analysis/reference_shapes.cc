@@ -149,11 +149,73 @@ namespace levelsinter
   }
 
   template <int dim>
+  PerturbedBall<dim>::PerturbedBall(const Point<dim>  &centre,
+                                    const double       radius,
+                                    const double       amplitude,
+                                    const unsigned int mode)
+    : centre(centre)
+    , radius(radius)
+    , delta(amplitude)
+    , mode(mode)
+  {}
+
+  template <int dim>
+  double
+  PerturbedBall<dim>::value(const Point<dim> &p, const unsigned int) const
+  {
+    const Tensor<1, dim> x = p - centre;
+    const double         r = x.norm();
+    if (r == 0)
+      return -radius * (1 - delta);
+    double shape = 0, slope = 0; // r(angle)/R - 1 and its angular derivative
+    if constexpr (dim == 2)
+      {
+        const double theta = std::atan2(x[1], x[0]);
+        shape               = delta * std::cos(mode * theta);
+        slope               = -delta * mode * std::sin(mode * theta);
+      }
+    else
+      {
+        // P_n(c) and P_n'(c) by the three-term recurrences.
+        const double c = x[dim - 1] / r;
+        double       p_prev = 1, p = c, dp_prev = 0, dp = 1;
+        if (mode == 0)
+          p = 1, dp = 0;
+        for (unsigned int k = 1; k < mode; ++k)
+          {
+            const double p_next  = ((2 * k + 1) * c * p - k * p_prev) / (k + 1);
+            const double dp_next = dp_prev + (2 * k + 1) * p;
+            p_prev               = p;
+            p                    = p_next;
+            dp_prev              = dp;
+            dp                   = dp_next;
+          }
+        shape = delta * p;
+        slope = -delta * dp * std::sqrt(std::max(0., 1 - c * c));
+      }
+    const double surface = radius * (1 + shape);
+    return (r - surface) /
+           std::sqrt(1 + radius * radius * slope * slope / (r * r));
+  }
+
+  template <int dim>
   std::unique_ptr<Function<dim>>
   make_initial_signed_distance(const SceneParameters &scene)
   {
     if (scene.geometry.shape == "particles")
       return std::make_unique<UnionOfBalls<dim>>(scene.geometry.particles);
+    if (scene.geometry.shape == "perturbed particle")
+      {
+        const auto &particle = scene.geometry.particles.at(0);
+        Point<dim>  centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = particle[d];
+        return std::make_unique<PerturbedBall<dim>>(
+          centre,
+          particle[dim],
+          scene.geometry.perturbation_amplitude,
+          scene.geometry.perturbation_mode);
+      }
     if constexpr (dim == 2)
       {
         const auto &g = scene.geometry;
@@ -172,4 +234,6 @@ namespace levelsinter
   make_initial_signed_distance<3>(const SceneParameters &);
   template class UnionOfBalls<2>;
   template class UnionOfBalls<3>;
+  template class PerturbedBall<2>;
+  template class PerturbedBall<3>;
 } // namespace levelsinter

@@ -1,16 +1,23 @@
 #include <levelsinter/mechanisms/prescribed_velocity.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
+#include <levelsinter/mechanisms/surface_diffusion.h>
 
 namespace levelsinter
 {
   template <int dim>
   std::vector<std::unique_ptr<Mechanism<dim>>>
-  make_scene_mechanisms(const SceneParameters &scene, TimerOutput &)
+  make_scene_mechanisms(const SceneParameters &scene, TimerOutput &timer)
   {
     std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
     if (scene.velocity.type != "none")
       mechanisms.push_back(std::make_unique<PrescribedVelocity<dim>>(
         scene.velocity, scene.level_set.theta));
+    if (scene.surface_diffusion.enabled)
+      mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
+        scene.surface_diffusion,
+        LevelSetFilter(scene.level_set.filter,
+                       scene.level_set.filter_thickness),
+        timer));
     return mechanisms;
   }
 

@@ -79,9 +79,20 @@ namespace levelsinter
       prm.declare_entry(
         "Shape",
         "particles",
-        Patterns::Selection("particles|slotted disk"),
-        "What the solid is at t = 0: the union of the particles, or "
-        "Zalesak's slotted disk (2D only; for the transport benchmark).");
+        Patterns::Selection("particles|slotted disk|perturbed particle"),
+        "What the solid is at t = 0: the union of the particles, "
+        "Zalesak's slotted disk (2D only; for the transport benchmark), or "
+        "the first particle with its radius modulated by one mode "
+        "(r = R(1 + delta cos n theta) in 2D, R(1 + delta P_n(cos theta)) "
+        "in 3D; the Mullins test of surface diffusion).");
+      prm.declare_entry("Perturbation amplitude",
+                        "0.05",
+                        Patterns::Double(0, 0.5),
+                        "delta of the perturbed particle, relative to R.");
+      prm.declare_entry("Perturbation mode",
+                        "2",
+                        Patterns::Integer(0),
+                        "n of the perturbed particle.");
       prm.declare_entry(
         "Particles",
         "",
@@ -248,6 +259,64 @@ namespace levelsinter
     }
     prm.leave_subsection();
 
+    prm.enter_subsection("Surface diffusion");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Move the interface by surface diffusion, "
+                        "v_n = C_s Delta_s kappa (paper Eq. 75), with the "
+                        "mixed curvature / surface-Laplacian system (Eq. 82).");
+      prm.declare_entry("Coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "C_s [m^4/s]. 0: computed as D_s delta_s gamma Omega "
+                        "/ kT from the five entries below.");
+      prm.declare_entry("Surface diffusivity",
+                        "0",
+                        Patterns::Double(0),
+                        "D_s [m^2/s].");
+      prm.declare_entry("Surface layer thickness",
+                        "0",
+                        Patterns::Double(0),
+                        "delta_s [m].");
+      prm.declare_entry("Surface energy",
+                        "0",
+                        Patterns::Double(0),
+                        "gamma_sf [J/m^2].");
+      prm.declare_entry("Atomic volume",
+                        "0",
+                        Patterns::Double(0),
+                        "Omega [m^3].");
+      prm.declare_entry("Thermal energy",
+                        "0",
+                        Patterns::Double(0),
+                        "kT [J].");
+      prm.declare_entry("Time unit",
+                        "seconds",
+                        Patterns::Selection("seconds|reduced"),
+                        "Unit of Time/End time and Time/Time step: seconds, "
+                        "or the reduced time t* = C_s t / R^4 with R the "
+                        "reference radius.");
+      prm.declare_entry("Reference radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R of the reduced time t* (needed when Time unit = "
+                        "reduced).");
+      prm.declare_entry("Coupled",
+                        "true",
+                        Patterns::Bool(),
+                        "true: the mixed kappa / v_s system with the dt "
+                        "coupling term (Eq. 80-82), stable for large steps; "
+                        "false: kappa then v_s (decoupled, explicit in the "
+                        "fourth-order operator, only for comparisons).");
+      prm.declare_entry("Solver tolerance",
+                        "1e-8",
+                        Patterns::Double(0),
+                        "Relative residual of the kappa / v_s solve.");
+    }
+    prm.leave_subsection();
+
     prm.enter_subsection("Output");
     {
       prm.declare_entry("Directory",
@@ -325,7 +394,13 @@ namespace levelsinter
     geometry.slotted_disk_radius = prm.get_double("Slotted disk radius");
     geometry.slot_width          = prm.get_double("Slot width");
     geometry.slot_depth          = prm.get_double("Slot depth");
-    if (geometry.shape == "particles")
+    geometry.perturbation_amplitude = prm.get_double("Perturbation amplitude");
+    geometry.perturbation_mode      = prm.get_integer("Perturbation mode");
+    if (geometry.shape == "perturbed particle" && geometry.particles.size() != 1)
+      fail("Geometry/Particles",
+           "Shape = perturbed particle needs exactly one particle");
+    if (geometry.shape == "particles" ||
+        geometry.shape == "perturbed particle")
       {
         if (geometry.particles.empty())
           fail("Geometry/Particles",
@@ -386,6 +461,34 @@ namespace levelsinter
            "a CFL number or a fixed 'Time step' must be given (both are 0)");
     prm.leave_subsection();
 
+    prm.enter_subsection("Surface diffusion");
+    surface_diffusion.enabled          = prm.get_bool("Enabled");
+    surface_diffusion.coefficient      = prm.get_double("Coefficient");
+    surface_diffusion.diffusivity      = prm.get_double("Surface diffusivity");
+    surface_diffusion.layer_thickness  = prm.get_double("Surface layer thickness");
+    surface_diffusion.surface_energy   = prm.get_double("Surface energy");
+    surface_diffusion.atomic_volume    = prm.get_double("Atomic volume");
+    surface_diffusion.thermal_energy   = prm.get_double("Thermal energy");
+    surface_diffusion.time_unit        = prm.get("Time unit");
+    surface_diffusion.reference_radius = prm.get_double("Reference radius");
+    surface_diffusion.coupled          = prm.get_bool("Coupled");
+    surface_diffusion.solver_tolerance = prm.get_double("Solver tolerance");
+    if (surface_diffusion.enabled)
+      {
+        if (surface_diffusion.coefficient == 0 &&
+            surface_diffusion.thermal_energy == 0)
+          fail("Surface diffusion/Coefficient",
+               "give C_s or the material entries (Thermal energy is 0)");
+        if (!(surface_diffusion.surface_mobility() > 0))
+          fail("Surface diffusion/Coefficient",
+               "C_s = D_s delta_s gamma Omega / kT must be positive");
+        if (surface_diffusion.time_unit == "reduced" &&
+            surface_diffusion.reference_radius == 0)
+          fail("Surface diffusion/Reference radius",
+               "must be positive when Time unit = reduced");
+      }
+    prm.leave_subsection();
+
     prm.enter_subsection("Velocity");
     velocity.type = prm.get("Type");
     // Vectors are read only where the chosen type uses them, so that the
@@ -411,11 +514,13 @@ namespace levelsinter
                    velocity.rotation_axis[1],
                    velocity.rotation_axis[2]) == 0)
       fail("Velocity/Rotation axis", "must not be the zero vector");
-    if (velocity.type == "none" && time.time_step == 0)
+    if (velocity.type == "none" && time.time_step == 0 &&
+        !surface_diffusion.enabled)
       {
         prm.leave_subsection();
         fail("Time/Time step",
-             "with Velocity/Type = none the CFL number cannot choose a step: "
+             "with Velocity/Type = none and no mechanism giving a velocity "
+             "the CFL number cannot choose a step: "
              "set a positive 'Time step'");
       }
     prm.leave_subsection();
@@ -461,5 +566,14 @@ namespace levelsinter
     if (output.directory.empty())
       fail("Output/Directory", "must not be empty");
     prm.leave_subsection();
+  }
+
+  double
+  SceneParameters::SurfaceDiffusion::surface_mobility() const
+  {
+    if (coefficient > 0)
+      return coefficient;
+    return diffusivity * layer_thickness * surface_energy * atomic_volume /
+           thermal_energy;
   }
 } // namespace levelsinter

@@ -218,6 +218,10 @@ namespace levelsinter
               }
             row.push_back(interface_measures::neck_radius(alpha, c1, c2));
           }
+        const bool has_neck = row.size() > 11;
+        for (const auto &mechanism : mechanisms)
+          for (const double value : mechanism->metric_values())
+            row.push_back(value);
         if (!metrics)
           {
             std::vector<std::string> columns = {"step",
@@ -231,8 +235,11 @@ namespace levelsinter
                                                 "max_velocity",
                                                 "transport_iterations",
                                                 "wall_time"};
-            if (row.size() > columns.size())
+            if (has_neck)
               columns.push_back("neck_radius");
+            for (const auto &mechanism : mechanisms)
+              for (const auto &name : mechanism->metric_names())
+                columns.push_back(name);
             metrics = std::make_unique<MetricsLog>(scene.output.directory +
                                                      "/metrics.csv",
                                                    columns,
@@ -318,6 +325,8 @@ namespace levelsinter
           !(t < end_time * (1 - 1e-12)) ||
           (scene.time.max_steps > 0 && step >= scene.time.max_steps);
         record(step, t, dt, final_step);
+        if (step_observer)
+          step_observer(step, t, alpha);
       }
 
     summary.steps = step;

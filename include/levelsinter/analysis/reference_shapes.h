@@ -45,6 +45,41 @@ namespace levelsinter
   };
 
   /**
+   * A ball whose radius is modulated by one mode, the Mullins test of
+   * surface diffusion: r = R (1 + delta cos(n theta)) in 2D,
+   * r = R (1 + delta P_n(cos theta)) in 3D (axisymmetric about z, P_n the
+   * Legendre polynomial, i.e. the spherical harmonic Y_n^0 up to a factor).
+   * value() is the signed distance to first order in the slope,
+   * (|x - c| - r(angle)) / sqrt(1 + |r'(angle)|^2 / |x - c|^2): exact zero
+   * set, a distance accurate to O(delta^2) near it.
+   */
+  template <int dim>
+  class PerturbedBall : public Function<dim>
+  {
+  public:
+    PerturbedBall(const Point<dim>  &centre,
+                  const double       radius,
+                  const double       amplitude,
+                  const unsigned int mode);
+
+    double
+    value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /** The mode's amplitude delta of a shape given by r(angle). */
+    double
+    amplitude() const
+    {
+      return delta;
+    }
+
+  private:
+    Point<dim>   centre;
+    double       radius;
+    double       delta;
+    unsigned int mode;
+  };
+
+  /**
    * Exact signed distance to Zalesak's slotted disk (2D): a disk with a
    * vertical slot of the given width cut from its bottom up to the given
    * depth. The boundary is one circular arc and three segments.
