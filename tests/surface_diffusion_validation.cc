@@ -110,6 +110,8 @@ namespace
            radius;
   }
 
+  double filter_thickness = 0;
+
   template <int dim>
   void
   mullins(const std::string               &scene_file,
@@ -161,7 +163,8 @@ namespace
              {"Mesh refinement/Minimum level",
               std::to_string(level > 3 ? level - 3 : 0)},
              {"Mesh refinement/Band width", std::to_string(4 * h)},
-             {"Level set/Filter thickness", std::to_string(6 * h)},
+             {"Level set/Filter thickness",
+              std::to_string(std::max(6 * h, filter_thickness))},
              {"Time/End time", Utilities::to_string(end_time, 16)},
              {"Time/Time step", Utilities::to_string(end_time / steps, 16)},
              {"Time/CFL number", "0"}});
@@ -230,7 +233,9 @@ main(int argc, char **argv)
       std::string                   csv;
       std::map<std::string, double> limits;
       for (unsigned int i = 5; i + 1 < args.size(); i += 2)
-        if (args[i] == "--mode")
+        if (args[i] == "--filter-thickness")
+          filter_thickness = std::stod(args[i + 1]);
+        else if (args[i] == "--mode")
           mode = std::stoi(args[i + 1]);
         else if (args[i] == "--csv")
           csv = args[i + 1];

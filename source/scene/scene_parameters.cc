@@ -313,7 +313,15 @@ namespace levelsinter
       prm.declare_entry("Solver tolerance",
                         "1e-8",
                         Patterns::Double(0),
-                        "Relative residual of the kappa / v_s solve.");
+                        "Relative residual of the kappa / v_s solve (gmres).");
+      prm.declare_entry("Linear solver",
+                        "direct",
+                        Patterns::Selection("direct|gmres"),
+                        "direct: KLU (Trilinos Amesos) on the coupled system, "
+                        "robust at any dt; gmres: FGMRES with a block "
+                        "Schur-complement preconditioner (AMG-preconditioned "
+                        "CG inside), whose iterations grow with C_s dt / h^4 "
+                        "(doc/validation.md).");
     }
     prm.leave_subsection();
 
@@ -473,6 +481,7 @@ namespace levelsinter
     surface_diffusion.reference_radius = prm.get_double("Reference radius");
     surface_diffusion.coupled          = prm.get_bool("Coupled");
     surface_diffusion.solver_tolerance = prm.get_double("Solver tolerance");
+    surface_diffusion.linear_solver    = prm.get("Linear solver");
     if (surface_diffusion.enabled)
       {
         if (surface_diffusion.coefficient == 0 &&

@@ -10,6 +10,8 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
+#include <array>
+
 namespace levelsinter
 {
   using namespace dealii;
@@ -47,6 +49,8 @@ namespace levelsinter
     struct Settings
     {
       bool         coupled        = true;
+      // KLU on the assembled 2x2 system, or GMRES (see the class comment).
+      bool         direct         = true;
       double       tolerance      = 1e-8;
       unsigned int max_iterations = 500;
     };
@@ -84,7 +88,21 @@ namespace levelsinter
       return velocity;
     }
 
+    /** Nodal-averaged unit normals N_alpha (Eq. 84), one vector per axis. */
+    const std::array<Vector, dim> &
+    nodal_normals() const
+    {
+      return normals;
+    }
+
   private:
+    bool
+    in_band(const LevelSetField<dim>                             &level_set,
+            const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+    void
+    compute_normals(const LevelSetField<dim> &level_set);
+
     void
     assemble(const LevelSetField<dim> &level_set,
              const double              coefficient,
@@ -93,6 +111,9 @@ namespace levelsinter
 
     unsigned int
     solve_coupled(const LevelSetField<dim> &level_set, const double scale);
+
+    unsigned int
+    solve_direct(const LevelSetField<dim> &level_set, const double scale);
 
     unsigned int
     solve_decoupled(const LevelSetField<dim> &level_set);
@@ -106,6 +127,7 @@ namespace levelsinter
     Vector                         rhs;
     Vector                         kappa;
     Vector                         velocity;
+    std::array<Vector, dim>        normals;
 
   public:
     /** CG iterations of the inner solves in the last coupled solve. */

@@ -107,6 +107,7 @@ namespace levelsinter
       double      reference_radius = 0;         // R of t*
       bool        coupled          = true;      // mixed (Eq. 82) or decoupled
       double      solver_tolerance = 1e-8;
+      std::string linear_solver    = "direct"; // or "gmres"
 
       /** C_s = D_s delta_s gamma_sf Omega / kT, or the given coefficient. */
       double
