@@ -19,6 +19,7 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -111,6 +112,10 @@ namespace
   }
 
   double filter_thickness = 0;
+  // Run this fraction of the e-folding time (stiffness probes), and the
+  // scheme (--coupled 0: kappa then v_s).
+  double       time_fraction = 1;
+  unsigned int coupled       = 1;
 
   template <int dim>
   void
@@ -125,7 +130,7 @@ namespace
     const double exact_rate =
       dim == 2 ? double(mode * mode) * (mode * mode - 1.) :
                  double(mode - 1) * mode * (mode + 1) * (mode + 2);
-    const double end_time = 1 / exact_rate;
+    const double end_time = time_fraction / exact_rate;
     Point<dim>   centre;
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = base.geometry.particles[0][d];
@@ -136,7 +141,7 @@ namespace
       table.open(csv);
     const std::string header =
       "mode,level,h,steps,dt,rate,exact_rate,rate_error,volume_change,"
-      "mean_iterations,wall_time";
+      "mean_iterations,wall_time,max_amplitude_ratio";
     if (table)
       table << header << "\n";
     std::cout << header << "\n";
@@ -167,7 +172,8 @@ namespace
               std::to_string(std::max(6 * h, filter_thickness))},
              {"Time/End time", Utilities::to_string(end_time, 16)},
              {"Time/Time step", Utilities::to_string(end_time / steps, 16)},
-             {"Time/CFL number", "0"}});
+             {"Time/CFL number", "0"},
+             {"Surface diffusion/Coupled", coupled ? "true" : "false"}});
           Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
           simulation.initialise();
           std::vector<double> times, logs;
@@ -185,7 +191,17 @@ namespace
             [&](unsigned int, double t, const LevelSetField<dim> &alpha) {
               observe(t, alpha);
             });
-          const auto summary = simulation.run();
+          typename Simulation<dim>::Summary summary;
+          try
+            {
+              summary = simulation.run();
+            }
+          catch (const std::exception &)
+            {
+              // A blown-up run (solver failure) counts as unstable.
+              logs.push_back(std::log(1e10));
+              times.push_back(end_time);
+            }
           const double volume =
             interface_measures::volume_and_area(simulation.level_set())
               .solid_volume;
@@ -208,7 +224,9 @@ namespace
               << last_error << "," << last_volume << ","
               << column_mean(output + "/metrics.csv",
                              "surface_diffusion_iterations")
-              << "," << summary.wall_time;
+              << "," << summary.wall_time << ","
+              << std::exp(*std::max_element(logs.begin(), logs.end()) -
+                          logs.front());
           std::cout << row.str() << std::endl;
           if (table)
             table << row.str() << "\n";
@@ -233,7 +251,11 @@ main(int argc, char **argv)
       std::string                   csv;
       std::map<std::string, double> limits;
       for (unsigned int i = 5; i + 1 < args.size(); i += 2)
-        if (args[i] == "--filter-thickness")
+        if (args[i] == "--time-fraction")
+          time_fraction = std::stod(args[i + 1]);
+        else if (args[i] == "--coupled")
+          coupled = std::stoi(args[i + 1]);
+        else if (args[i] == "--filter-thickness")
           filter_thickness = std::stod(args[i + 1]);
         else if (args[i] == "--mode")
           mode = std::stoi(args[i + 1]);

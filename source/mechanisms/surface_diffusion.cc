@@ -1,3 +1,4 @@
+#include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/mechanisms/surface_diffusion.h>
 
 #include <cmath>
@@ -21,6 +22,7 @@ namespace levelsinter
     const LevelSetFilter                    &filter,
     TimerOutput                             &timer)
     : mobility(coefficient_in_scene_time(parameters))
+    , volume_correction(parameters.volume_correction)
     , solver(filter,
              {parameters.coupled,
               parameters.linear_solver == "direct",
@@ -54,6 +56,20 @@ namespace levelsinter
     solved_time = t;
 
     TimerOutput::Scope scope(timer, "surface diffusion velocity");
+    // Eq. 113-116: a uniform normal speed that gives back, over this step,
+    // the solid volume lost or gained since t = 0 (by the scheme and by the
+    // reinitialisation alike).
+    correction_speed = 0;
+    if (volume_correction)
+      {
+        const auto measures = interface_measures::volume_and_area(alpha);
+        if (initial_volume < 0)
+          initial_volume = measures.solid_volume;
+        if (dt > 0 && measures.interface_area > 0)
+          correction_speed = (initial_volume - measures.solid_volume) /
+                             (dt * measures.interface_area);
+      }
+
     // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
     // vertices; the velocity space numbers them its own way.
     const auto    &ls_dofs = alpha.dof_handler();
@@ -76,7 +92,8 @@ namespace levelsinter
                 {
                   const auto index = v_cell->vertex_dof_index(v, c);
                   if (velocity.locally_owned().is_element(index))
-                    increment(index) = v_s(i) * normals[c](i);
+                    increment(index) =
+                      (v_s(i) + correction_speed) * normals[c](i);
                 }
             }
         }
@@ -88,14 +105,14 @@ namespace levelsinter
   std::vector<std::string>
   SurfaceDiffusion<dim>::metric_names() const
   {
-    return {"surface_diffusion_iterations"};
+    return {"surface_diffusion_iterations", "volume_correction_speed"};
   }
 
   template <int dim>
   std::vector<double>
   SurfaceDiffusion<dim>::metric_values() const
   {
-    return {double(iterations)};
+    return {double(iterations), correction_speed};
   }
 
   template class SurfaceDiffusion<2>;

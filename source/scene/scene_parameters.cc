@@ -314,6 +314,12 @@ namespace levelsinter
                         "1e-8",
                         Patterns::Double(0),
                         "Relative residual of the kappa / v_s solve (gmres).");
+      prm.declare_entry("Volume correction",
+                        "false",
+                        Patterns::Bool(),
+                        "Add the uniform normal speed v^c of Eq. 113-116 "
+                        "that restores, over each step, the solid volume of "
+                        "t = 0.");
       prm.declare_entry("Linear solver",
                         "direct",
                         Patterns::Selection("direct|gmres"),
@@ -482,6 +488,7 @@ namespace levelsinter
     surface_diffusion.coupled          = prm.get_bool("Coupled");
     surface_diffusion.solver_tolerance = prm.get_double("Solver tolerance");
     surface_diffusion.linear_solver    = prm.get("Linear solver");
+    surface_diffusion.volume_correction = prm.get_bool("Volume correction");
     if (surface_diffusion.enabled)
       {
         if (surface_diffusion.coefficient == 0 &&
