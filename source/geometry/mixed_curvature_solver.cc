@@ -91,9 +91,9 @@ namespace levelsinter
     // (M + b L_s) M^-1 (M + b L_s), L_s the tangential stiffness with the
     // mean weight: it matches S within a factor 2 on modes along the
     // level sets (where K_A ~ L) and equals M on modes across them (where
-    // L vanishes), so no mode is mis-scaled by b/h^2. M^-1 and
-    // (M + b L_s)^-1 are one AMG V-cycle each: a fixed linear map, so plain
-    // GMRES applies.
+    // L vanishes). M^-1 and (M + b L_s)^-1 are inner CG + AMG solves to a
+    // loose tolerance, hence flexible GMRES outside. Measured: it does not
+    // keep the iterations flat yet (doc/numerics.md).
     class SchurPreconditioner
     {
     public:

@@ -272,26 +272,15 @@ namespace levelsinter
                         Patterns::Double(0),
                         "C_s [m^4/s]. 0: computed as D_s delta_s gamma Omega "
                         "/ kT from the five entries below.");
-      prm.declare_entry("Surface diffusivity",
-                        "0",
-                        Patterns::Double(0),
-                        "D_s [m^2/s].");
-      prm.declare_entry("Surface layer thickness",
-                        "0",
-                        Patterns::Double(0),
-                        "delta_s [m].");
-      prm.declare_entry("Surface energy",
-                        "0",
-                        Patterns::Double(0),
-                        "gamma_sf [J/m^2].");
-      prm.declare_entry("Atomic volume",
-                        "0",
-                        Patterns::Double(0),
-                        "Omega [m^3].");
-      prm.declare_entry("Thermal energy",
-                        "0",
-                        Patterns::Double(0),
-                        "kT [J].");
+      // The material entries of C_s = D_s delta_s gamma Omega / kT.
+      for (const auto &[name, unit] :
+           std::vector<std::pair<std::string, std::string>>{
+             {"Surface diffusivity", "D_s [m^2/s]."},
+             {"Surface layer thickness", "delta_s [m]."},
+             {"Surface energy", "gamma_sf [J/m^2]."},
+             {"Atomic volume", "Omega [m^3]."},
+             {"Thermal energy", "kT [J]."}})
+        prm.declare_entry(name, "0", Patterns::Double(0), unit);
       prm.declare_entry("Time unit",
                         "seconds",
                         Patterns::Selection("seconds|reduced"),
