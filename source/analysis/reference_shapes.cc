@@ -40,7 +40,51 @@ namespace levelsinter
     double d = std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < ball_centres.size(); ++i)
       d = std::min(d, p.distance(ball_centres[i]) - ball_radii[i]);
-    return d;
+    if (d >= 0)
+      return d;
+    return -depth_inside(p);
+  }
+
+  template <int dim>
+  double
+  UnionOfBalls<dim>::depth_inside(const Point<dim> &p) const
+  {
+    // Distance to the union's boundary from inside: for each sphere the
+    // nearest point is the radial projection if no other ball covers it,
+    // else on the junction ring (circle in 3D, two points in 2D) with an
+    // overlapping ball. Third balls covering a junction are ignored.
+    const unsigned int n     = ball_centres.size();
+    double             depth = std::numeric_limits<double>::max();
+    auto covered = [&](const Point<dim> &q, const unsigned int skip) {
+      for (unsigned int k = 0; k < n; ++k)
+        if (k != skip && q.distance(ball_centres[k]) < ball_radii[k] * (1 - 1e-12))
+          return true;
+      return false;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Tensor<1, dim> x = p - ball_centres[i];
+        const double         r = x.norm();
+        if (r > 0 && !covered(ball_centres[i] + ball_radii[i] / r * x, i))
+          depth = std::min(depth, std::abs(ball_radii[i] - r));
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const Tensor<1, dim> axis = ball_centres[j] - ball_centres[i];
+            const double         c    = axis.norm();
+            if (j == i || c >= ball_radii[i] + ball_radii[j] ||
+                c <= std::abs(ball_radii[i] - ball_radii[j]))
+              continue;
+            const Tensor<1, dim> e = axis / c;
+            const double l = (c * c + ball_radii[i] * ball_radii[i] -
+                              ball_radii[j] * ball_radii[j]) /
+                             (2 * c);
+            const double ring = std::sqrt(ball_radii[i] * ball_radii[i] - l * l);
+            const double t    = (x - l * e) * e;
+            const double rho  = (x - l * e - t * e).norm();
+            depth = std::min(depth, std::hypot(t, rho - ring));
+          }
+      }
+    return depth;
   }
 
   SlottedDisk::SlottedDisk(const Point<2> &centre,

@@ -10,9 +10,12 @@ namespace levelsinter
   using namespace dealii;
 
   /**
-   * Signed distance of the union of balls: min_i (|x - c_i| - r_i), negative
-   * inside. Exact outside; inside the overlap of two balls it underestimates
-   * the depth, which leaves the zero level set exact.
+   * Signed distance of the union of balls, negative inside: min_i
+   * (|x - c_i| - r_i) outside (exact); inside, the distance to the exposed
+   * parts of the spheres and to the junction rings of overlapping pairs
+   * (exact where at most two balls overlap). min_i alone would put alpha
+   * near 0 along the middle of a neck, where any velocity error then
+   * pinches the solid from inside (seen in surface diffusion).
    */
   template <int dim>
   class UnionOfBalls : public Function<dim>
@@ -40,6 +43,9 @@ namespace levelsinter
     }
 
   private:
+    double
+    depth_inside(const Point<dim> &p) const;
+
     std::vector<Point<dim>> ball_centres;
     std::vector<double>     ball_radii;
   };
