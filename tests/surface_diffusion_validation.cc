@@ -1,6 +1,8 @@
 // Validation of surface diffusion (doc/validation.md, "Surface diffusion"):
 //
 //   surface_diffusion_validation mullins SCENE.prm LEVELS STEPS [options]
+//   surface_diffusion_validation neck SCENE.prm STEPS [--min-neck-growth f]
+//                                [--max-volume-change v]
 //
 // SCENE is a perturbed-particle scene in reduced time (Time unit = reduced,
 // reference radius R = the particle's radius), in which mode n decays as
@@ -234,6 +236,43 @@ namespace
     check("relative rate error (last run)", last_error, limits, "max-rate-error");
     check("volume change (last run)", last_volume, limits, "max-volume-change");
   }
+  // Two grains: run the scene for STEPS steps and check that the neck
+  // grows (the centres are the scene's particles) and the area is kept.
+  void
+  neck(const std::string                   &scene_file,
+       const unsigned int                   steps,
+       const std::map<std::string, double> &limits)
+  {
+    std::filesystem::create_directories("validation_output/sd_neck");
+    const auto scene = read_scene(scene_file,
+                                  {{"Output/Directory", "validation_output/sd_neck"},
+                                   {"Output/Field formats", "none"},
+                                   {"Output/Progress interval", "0"},
+                                   {"Time/Maximum steps", std::to_string(steps)}});
+    Simulation<2> simulation(scene, MPI_COMM_WORLD, std::cout);
+    simulation.initialise();
+    const auto &particles = scene.geometry.particles;
+    const Point<2> c1(particles[0][0], particles[0][1]);
+    const Point<2> c2(particles[1][0], particles[1][1]);
+    const double   x0 = interface_measures::neck_radius(simulation.level_set(), c1, c2);
+    const double   v0 =
+      interface_measures::volume_and_area(simulation.level_set()).solid_volume;
+    simulation.run();
+    const double x1 = interface_measures::neck_radius(simulation.level_set(), c1, c2);
+    const double v1 =
+      interface_measures::volume_and_area(simulation.level_set()).solid_volume;
+    std::cout << "neck " << x0 << " -> " << x1 << ", area change "
+              << (v1 - v0) / v0 << "\n";
+    // Growth as a shortfall below the required factor, so that check()
+    // (an upper bound on |value|) can test it.
+    check("neck growth shortfall",
+          std::max(0., limits.count("min-neck-growth") ?
+                         limits.at("min-neck-growth") - x1 / x0 :
+                         0.),
+          {{"shortfall", 0.}},
+          "shortfall");
+    check("area change", (v1 - v0) / v0, limits, "max-volume-change");
+  }
 } // namespace
 
 int
@@ -243,6 +282,14 @@ main(int argc, char **argv)
   const std::vector<std::string>   args(argv, argv + argc);
   try
     {
+      if (args.size() >= 4 && args[1] == "neck")
+        {
+          std::map<std::string, double> limits;
+          for (unsigned int i = 4; i + 1 < args.size(); i += 2)
+            limits[args[i].substr(2)] = std::stod(args[i + 1]);
+          neck(args[2], std::stoi(args[3]), limits);
+          return failures == 0 ? 0 : 1;
+        }
       if (args.size() < 5 || args[1] != "mullins")
         throw std::runtime_error(
           "usage: mullins SCENE LEVELS STEPS [--mode n] [--csv FILE] "
