@@ -28,18 +28,9 @@ namespace levelsinter
     using BlockVector  = TrilinosWrappers::MPI::BlockVector;
 
     // The 2x2 block system [[kk, kv], [vk, vv]] acting on (kappa, w).
-    class BlockSystem
+    struct BlockSystem
     {
-    public:
-      BlockSystem(const SparseMatrix &kk,
-                  const SparseMatrix &kv,
-                  const SparseMatrix &vk,
-                  const SparseMatrix &vv)
-        : kk(kk)
-        , kv(kv)
-        , vk(vk)
-        , vv(vv)
-      {}
+      const SparseMatrix &kk, &kv, &vk, &vv;
 
       void
       vmult(BlockVector &dst, const BlockVector &src) const
@@ -49,9 +40,6 @@ namespace levelsinter
         vk.vmult(dst.block(1), src.block(0));
         vv.vmult_add(dst.block(1), src.block(1));
       }
-
-    private:
-      const SparseMatrix &kk, &kv, &vk, &vv;
     };
 
     // x = A^-1 b for an SPD block by CG with AMG, to a relative tolerance.
@@ -94,18 +82,12 @@ namespace levelsinter
     // L vanishes). M^-1 and (M + b L_s)^-1 are inner CG + AMG solves to a
     // loose tolerance, hence flexible GMRES outside. Measured: it does not
     // keep the iterations flat yet (doc/numerics.md).
-    class SchurPreconditioner
+    struct SchurPreconditioner
     {
-    public:
-      SchurPreconditioner(const SparseMatrix                      &mass,
-                          const SparseMatrix                      &coupling,
-                          const InnerSolve   &mass_inverse,
-                          const InnerSolve   &shifted)
-        : mass(mass)
-        , coupling(coupling)
-        , mass_inverse(mass_inverse)
-        , shifted(shifted)
-      {}
+      const SparseMatrix &mass;
+      const SparseMatrix &coupling;
+      const InnerSolve   &mass_inverse;
+      const InnerSolve   &shifted;
 
       void
       vmult(BlockVector &dst, const BlockVector &src) const
@@ -122,12 +104,7 @@ namespace levelsinter
         mass_inverse.vmult(dst.block(0), a);
       }
 
-    private:
-      const SparseMatrix                      &mass;
-      const SparseMatrix                      &coupling;
-      const InnerSolve &mass_inverse;
-      const InnerSolve &shifted;
-      mutable Vector    a, c;
+      mutable Vector a = {}, c = {};
     };
   } // namespace
 
@@ -387,8 +364,8 @@ namespace levelsinter
     block_rhs.block(0) = rhs;
 
     const InnerSolve  mass_amg(kk, 1e-2), amg(presb, 1e-2);
-    const BlockSystem block_system(kk, kv, vk, vv);
-    const SchurPreconditioner preconditioner(kk, kv, mass_amg, amg);
+    const BlockSystem block_system{kk, kv, vk, vv};
+    const SchurPreconditioner preconditioner{kk, kv, mass_amg, amg};
     SolverControl control(settings.max_iterations,
                           settings.tolerance * block_rhs.l2_norm());
     unsigned int  iterations = 0;
@@ -428,7 +405,7 @@ namespace levelsinter
     relevant2.add_indices(level_set.locally_relevant(), n);
     DynamicSparsityPattern dsp(relevant2);
     const std::array<std::pair<const SparseMatrix *, std::array<types::global_dof_index, 2>>, 4>
-      blocks = {{{&kk, {0, 0}}, {&kv, {0, n}}, {&vk, {n, 0}}, {&vv, {n, n}}}};
+      blocks = {{{&kk, {{0, 0}}}, {&kv, {{0, n}}}, {&vk, {{n, 0}}}, {&vv, {{n, n}}}}};
     for (const auto &[block, offset] : blocks)
       for (const auto row : owned)
         for (auto entry = block->begin(row); entry != block->end(row); ++entry)
