@@ -40,7 +40,51 @@ namespace levelsinter
     double d = std::numeric_limits<double>::max();
     for (unsigned int i = 0; i < ball_centres.size(); ++i)
       d = std::min(d, p.distance(ball_centres[i]) - ball_radii[i]);
-    return d;
+    if (d >= 0)
+      return d;
+    return -depth_inside(p);
+  }
+
+  template <int dim>
+  double
+  UnionOfBalls<dim>::depth_inside(const Point<dim> &p) const
+  {
+    // Distance to the union's boundary from inside: for each sphere the
+    // nearest point is the radial projection if no other ball covers it,
+    // else on the junction ring (circle in 3D, two points in 2D) with an
+    // overlapping ball. Third balls covering a junction are ignored.
+    const unsigned int n     = ball_centres.size();
+    double             depth = std::numeric_limits<double>::max();
+    auto covered = [&](const Point<dim> &q, const unsigned int skip) {
+      for (unsigned int k = 0; k < n; ++k)
+        if (k != skip && q.distance(ball_centres[k]) < ball_radii[k] * (1 - 1e-12))
+          return true;
+      return false;
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Tensor<1, dim> x = p - ball_centres[i];
+        const double         r = x.norm();
+        if (r > 0 && !covered(ball_centres[i] + ball_radii[i] / r * x, i))
+          depth = std::min(depth, std::abs(ball_radii[i] - r));
+        for (unsigned int j = 0; j < n; ++j)
+          {
+            const Tensor<1, dim> axis = ball_centres[j] - ball_centres[i];
+            const double         c    = axis.norm();
+            if (j == i || c >= ball_radii[i] + ball_radii[j] ||
+                c <= std::abs(ball_radii[i] - ball_radii[j]))
+              continue;
+            const Tensor<1, dim> e = axis / c;
+            const double l = (c * c + ball_radii[i] * ball_radii[i] -
+                              ball_radii[j] * ball_radii[j]) /
+                             (2 * c);
+            const double ring = std::sqrt(ball_radii[i] * ball_radii[i] - l * l);
+            const double t    = (x - l * e) * e;
+            const double rho  = (x - l * e - t * e).norm();
+            depth = std::min(depth, std::hypot(t, rho - ring));
+          }
+      }
+    return depth;
   }
 
   SlottedDisk::SlottedDisk(const Point<2> &centre,
@@ -149,11 +193,73 @@ namespace levelsinter
   }
 
   template <int dim>
+  PerturbedBall<dim>::PerturbedBall(const Point<dim>  &centre,
+                                    const double       radius,
+                                    const double       amplitude,
+                                    const unsigned int mode)
+    : centre(centre)
+    , radius(radius)
+    , delta(amplitude)
+    , mode(mode)
+  {}
+
+  template <int dim>
+  double
+  PerturbedBall<dim>::value(const Point<dim> &p, const unsigned int) const
+  {
+    const Tensor<1, dim> x = p - centre;
+    const double         r = x.norm();
+    if (r == 0)
+      return -radius * (1 - delta);
+    double shape = 0, slope = 0; // r(angle)/R - 1 and its angular derivative
+    if constexpr (dim == 2)
+      {
+        const double theta = std::atan2(x[1], x[0]);
+        shape               = delta * std::cos(mode * theta);
+        slope               = -delta * mode * std::sin(mode * theta);
+      }
+    else
+      {
+        // P_n(c) and P_n'(c) by the three-term recurrences.
+        const double c = x[dim - 1] / r;
+        double       p_prev = 1, p = c, dp_prev = 0, dp = 1;
+        if (mode == 0)
+          p = 1, dp = 0;
+        for (unsigned int k = 1; k < mode; ++k)
+          {
+            const double p_next  = ((2 * k + 1) * c * p - k * p_prev) / (k + 1);
+            const double dp_next = dp_prev + (2 * k + 1) * p;
+            p_prev               = p;
+            p                    = p_next;
+            dp_prev              = dp;
+            dp                   = dp_next;
+          }
+        shape = delta * p;
+        slope = -delta * dp * std::sqrt(std::max(0., 1 - c * c));
+      }
+    const double surface = radius * (1 + shape);
+    return (r - surface) /
+           std::sqrt(1 + radius * radius * slope * slope / (r * r));
+  }
+
+  template <int dim>
   std::unique_ptr<Function<dim>>
   make_initial_signed_distance(const SceneParameters &scene)
   {
     if (scene.geometry.shape == "particles")
       return std::make_unique<UnionOfBalls<dim>>(scene.geometry.particles);
+    if (scene.geometry.shape == "perturbed particle")
+      {
+        const auto &particle = scene.geometry.particles.at(0);
+        Point<dim>  centre;
+        for (unsigned int d = 0; d < dim; ++d)
+          centre[d] = particle[d];
+        return std::make_unique<PerturbedBall<dim>>(
+          centre,
+          particle[dim],
+          scene.geometry.perturbation_amplitude,
+          scene.geometry.perturbation_mode);
+      }
     if constexpr (dim == 2)
       {
         const auto &g = scene.geometry;
@@ -172,4 +278,6 @@ namespace levelsinter
   make_initial_signed_distance<3>(const SceneParameters &);
   template class UnionOfBalls<2>;
   template class UnionOfBalls<3>;
+  template class PerturbedBall<2>;
+  template class PerturbedBall<3>;
 } // namespace levelsinter

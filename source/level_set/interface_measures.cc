@@ -102,6 +102,29 @@ namespace levelsinter::interface_measures
   }
 
   template <int dim>
+  double
+  interface_integral(
+    const LevelSetField<dim> &level_set,
+    const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
+      &integrand)
+  {
+    double result = 0;
+    integrate_cut<dim>(
+      level_set,
+      update_default,
+      update_JxW_values | update_quadrature_points | update_normal_vectors,
+      [](const FEValues<dim> &) {},
+      [&](const NonMatching::FEImmersedSurfaceValues<dim> &values) {
+        for (const unsigned int q : values.quadrature_point_indices())
+          result += integrand(values.quadrature_point(q),
+                              values.normal_vector(q)) *
+                    values.JxW(q);
+      });
+    return Utilities::MPI::sum(result,
+                               level_set.dof_handler().get_communicator());
+  }
+
+  template <int dim>
   ShapeError
   shape_error(const LevelSetField<dim> &level_set,
               const Function<dim>      &exact_signed_distance)
@@ -294,6 +317,14 @@ namespace levelsinter::interface_measures
   volume_and_area(const LevelSetField<2> &);
   template VolumeAndArea
   volume_and_area(const LevelSetField<3> &);
+  template double
+  interface_integral(
+    const LevelSetField<2> &,
+    const std::function<double(const Point<2> &, const Tensor<1, 2> &)> &);
+  template double
+  interface_integral(
+    const LevelSetField<3> &,
+    const std::function<double(const Point<3> &, const Tensor<1, 3> &)> &);
   template ShapeError
   shape_error(const LevelSetField<2> &, const Function<2> &);
   template ShapeError

@@ -1,6 +1,7 @@
 #include <levelsinter/mechanisms/prescribed_velocity.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
+#include <levelsinter/mechanisms/surface_diffusion.h>
 
 namespace levelsinter
 {
@@ -15,6 +16,12 @@ namespace levelsinter
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
         std::make_unique<ViscousFlow<dim>>(scene.viscous_flow, timer));
+    if (scene.surface_diffusion.enabled)
+      mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
+        scene.surface_diffusion,
+        LevelSetFilter(scene.level_set.filter,
+                       scene.level_set.filter_thickness),
+        timer));
     return mechanisms;
   }
 

@@ -79,9 +79,20 @@ namespace levelsinter
       prm.declare_entry(
         "Shape",
         "particles",
-        Patterns::Selection("particles|slotted disk"),
-        "What the solid is at t = 0: the union of the particles, or "
-        "Zalesak's slotted disk (2D only; for the transport benchmark).");
+        Patterns::Selection("particles|slotted disk|perturbed particle"),
+        "What the solid is at t = 0: the union of the particles, "
+        "Zalesak's slotted disk (2D only; for the transport benchmark), or "
+        "the first particle with its radius modulated by one mode "
+        "(r = R(1 + delta cos n theta) in 2D, R(1 + delta P_n(cos theta)) "
+        "in 3D; the Mullins test of surface diffusion).");
+      prm.declare_entry("Perturbation amplitude",
+                        "0.05",
+                        Patterns::Double(0, 0.5),
+                        "delta of the perturbed particle, relative to R.");
+      prm.declare_entry("Perturbation mode",
+                        "2",
+                        Patterns::Integer(0),
+                        "n of the perturbed particle.");
       prm.declare_entry(
         "Particles",
         "",
@@ -259,6 +270,66 @@ namespace levelsinter
     prm.leave_subsection();
 
     ViscousFlowParameters::declare_parameters(prm);
+    prm.enter_subsection("Surface diffusion");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Move the interface by surface diffusion, "
+                        "v_n = C_s Delta_s kappa (paper Eq. 75), with the "
+                        "mixed curvature / surface-Laplacian system (Eq. 82).");
+      prm.declare_entry("Coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "C_s [m^4/s]. 0: computed as D_s delta_s gamma Omega "
+                        "/ kT from the five entries below.");
+      // The material entries of C_s = D_s delta_s gamma Omega / kT.
+      for (const auto &[name, unit] :
+           std::vector<std::pair<std::string, std::string>>{
+             {"Surface diffusivity", "D_s [m^2/s]."},
+             {"Surface layer thickness", "delta_s [m]."},
+             {"Surface energy", "gamma_sf [J/m^2]."},
+             {"Atomic volume", "Omega [m^3]."},
+             {"Thermal energy", "kT [J]."}})
+        prm.declare_entry(name, "0", Patterns::Double(0), unit);
+      prm.declare_entry("Time unit",
+                        "seconds",
+                        Patterns::Selection("seconds|reduced"),
+                        "Unit of Time/End time and Time/Time step: seconds, "
+                        "or the reduced time t* = C_s t / R^4 with R the "
+                        "reference radius.");
+      prm.declare_entry("Reference radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R of the reduced time t* (needed when Time unit = "
+                        "reduced).");
+      prm.declare_entry("Coupled",
+                        "true",
+                        Patterns::Bool(),
+                        "true: the mixed kappa / v_s system with the dt "
+                        "coupling term (Eq. 80-82), stable for large steps; "
+                        "false: kappa then v_s (decoupled, explicit in the "
+                        "fourth-order operator, only for comparisons).");
+      prm.declare_entry("Solver tolerance",
+                        "1e-8",
+                        Patterns::Double(0),
+                        "Relative residual of the kappa / v_s solve (gmres).");
+      prm.declare_entry("Volume correction",
+                        "false",
+                        Patterns::Bool(),
+                        "Add the uniform normal speed v^c of Eq. 113-116 "
+                        "that restores, over each step, the solid volume of "
+                        "t = 0.");
+      prm.declare_entry("Linear solver",
+                        "direct",
+                        Patterns::Selection("direct|gmres"),
+                        "direct: KLU (Trilinos Amesos) on the coupled system, "
+                        "robust at any dt; gmres: FGMRES with a block "
+                        "Schur-complement preconditioner (AMG-preconditioned "
+                        "CG inside), whose iterations grow with C_s dt / h^4 "
+                        "(doc/validation.md).");
+    }
+    prm.leave_subsection();
 
     prm.enter_subsection("Output");
     {
@@ -337,7 +408,13 @@ namespace levelsinter
     geometry.slotted_disk_radius = prm.get_double("Slotted disk radius");
     geometry.slot_width          = prm.get_double("Slot width");
     geometry.slot_depth          = prm.get_double("Slot depth");
-    if (geometry.shape == "particles")
+    geometry.perturbation_amplitude = prm.get_double("Perturbation amplitude");
+    geometry.perturbation_mode      = prm.get_integer("Perturbation mode");
+    if (geometry.shape == "perturbed particle" && geometry.particles.size() != 1)
+      fail("Geometry/Particles",
+           "Shape = perturbed particle needs exactly one particle");
+    if (geometry.shape == "particles" ||
+        geometry.shape == "perturbed particle")
       {
         if (geometry.particles.empty())
           fail("Geometry/Particles",
@@ -401,6 +478,35 @@ namespace levelsinter
     prm.leave_subsection();
 
     viscous_flow.parse_parameters(prm, d);
+    prm.enter_subsection("Surface diffusion");
+    surface_diffusion.enabled          = prm.get_bool("Enabled");
+    surface_diffusion.coefficient      = prm.get_double("Coefficient");
+    surface_diffusion.diffusivity      = prm.get_double("Surface diffusivity");
+    surface_diffusion.layer_thickness  = prm.get_double("Surface layer thickness");
+    surface_diffusion.surface_energy   = prm.get_double("Surface energy");
+    surface_diffusion.atomic_volume    = prm.get_double("Atomic volume");
+    surface_diffusion.thermal_energy   = prm.get_double("Thermal energy");
+    surface_diffusion.time_unit        = prm.get("Time unit");
+    surface_diffusion.reference_radius = prm.get_double("Reference radius");
+    surface_diffusion.coupled          = prm.get_bool("Coupled");
+    surface_diffusion.solver_tolerance = prm.get_double("Solver tolerance");
+    surface_diffusion.linear_solver    = prm.get("Linear solver");
+    surface_diffusion.volume_correction = prm.get_bool("Volume correction");
+    if (surface_diffusion.enabled)
+      {
+        if (surface_diffusion.coefficient == 0 &&
+            surface_diffusion.thermal_energy == 0)
+          fail("Surface diffusion/Coefficient",
+               "give C_s or the material entries (Thermal energy is 0)");
+        if (!(surface_diffusion.surface_mobility() > 0))
+          fail("Surface diffusion/Coefficient",
+               "C_s = D_s delta_s gamma Omega / kT must be positive");
+        if (surface_diffusion.time_unit == "reduced" &&
+            surface_diffusion.reference_radius == 0)
+          fail("Surface diffusion/Reference radius",
+               "must be positive when Time unit = reduced");
+      }
+    prm.leave_subsection();
 
     prm.enter_subsection("Velocity");
     velocity.type = prm.get("Type");
@@ -427,14 +533,15 @@ namespace levelsinter
                    velocity.rotation_axis[1],
                    velocity.rotation_axis[2]) == 0)
       fail("Velocity/Rotation axis", "must not be the zero vector");
-    // A mechanism that computes a velocity (viscous flow) lets the CFL
-    // number choose the step.
+    // A mechanism that computes a velocity (viscous flow, surface
+    // diffusion) lets the CFL number or its own limit choose the step.
     if (velocity.type == "none" && time.time_step == 0 &&
-        !viscous_flow.enabled)
+        !viscous_flow.enabled && !surface_diffusion.enabled)
       {
         prm.leave_subsection();
         fail("Time/Time step",
-             "with Velocity/Type = none the CFL number cannot choose a step: "
+             "with Velocity/Type = none and no mechanism giving a velocity "
+             "the CFL number cannot choose a step: "
              "set a positive 'Time step'");
       }
     prm.leave_subsection();
@@ -480,5 +587,14 @@ namespace levelsinter
     if (output.directory.empty())
       fail("Output/Directory", "must not be empty");
     prm.leave_subsection();
+  }
+
+  double
+  SceneParameters::SurfaceDiffusion::surface_mobility() const
+  {
+    if (coefficient > 0)
+      return coefficient;
+    return diffusivity * layer_thickness * surface_energy * atomic_volume /
+           thermal_energy;
   }
 } // namespace levelsinter

@@ -328,6 +328,8 @@ namespace levelsinter
           !(t < end_time * (1 - 1e-12)) ||
           (scene.time.max_steps > 0 && step >= scene.time.max_steps);
         record(step, t, dt, final_step);
+        if (step_observer)
+          step_observer(step, t, alpha);
       }
 
     summary.steps = step;

@@ -10,9 +10,12 @@ namespace levelsinter
   using namespace dealii;
 
   /**
-   * Signed distance of the union of balls: min_i (|x - c_i| - r_i), negative
-   * inside. Exact outside; inside the overlap of two balls it underestimates
-   * the depth, which leaves the zero level set exact.
+   * Signed distance of the union of balls, negative inside: min_i
+   * (|x - c_i| - r_i) outside (exact); inside, the distance to the exposed
+   * parts of the spheres and to the junction rings of overlapping pairs
+   * (exact where at most two balls overlap). min_i alone would put alpha
+   * near 0 along the middle of a neck, where any velocity error then
+   * pinches the solid from inside (seen in surface diffusion).
    */
   template <int dim>
   class UnionOfBalls : public Function<dim>
@@ -40,8 +43,46 @@ namespace levelsinter
     }
 
   private:
+    double
+    depth_inside(const Point<dim> &p) const;
+
     std::vector<Point<dim>> ball_centres;
     std::vector<double>     ball_radii;
+  };
+
+  /**
+   * A ball whose radius is modulated by one mode, the Mullins test of
+   * surface diffusion: r = R (1 + delta cos(n theta)) in 2D,
+   * r = R (1 + delta P_n(cos theta)) in 3D (axisymmetric about z, P_n the
+   * Legendre polynomial, i.e. the spherical harmonic Y_n^0 up to a factor).
+   * value() is the signed distance to first order in the slope,
+   * (|x - c| - r(angle)) / sqrt(1 + |r'(angle)|^2 / |x - c|^2): exact zero
+   * set, a distance accurate to O(delta^2) near it.
+   */
+  template <int dim>
+  class PerturbedBall : public Function<dim>
+  {
+  public:
+    PerturbedBall(const Point<dim>  &centre,
+                  const double       radius,
+                  const double       amplitude,
+                  const unsigned int mode);
+
+    double
+    value(const Point<dim> &p, const unsigned int component = 0) const override;
+
+    /** The mode's amplitude delta of a shape given by r(angle). */
+    double
+    amplitude() const
+    {
+      return delta;
+    }
+
+  private:
+    Point<dim>   centre;
+    double       radius;
+    double       delta;
+    unsigned int mode;
   };
 
   /**

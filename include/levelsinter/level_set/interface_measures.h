@@ -6,6 +6,8 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
+#include <functional>
+
 namespace levelsinter
 {
   /**
@@ -25,6 +27,17 @@ namespace levelsinter
     template <int dim>
     VolumeAndArea
     volume_and_area(const LevelSetField<dim> &level_set);
+
+    /**
+     * The integral over {alpha_h = 0} of f(x, n), n the unit normal pointing
+     * out of the solid (e.g. Fourier modes of a perturbed circle).
+     */
+    template <int dim>
+    double
+    interface_integral(
+      const LevelSetField<dim> &level_set,
+      const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
+        &integrand);
 
     /**
      * Distance of the discrete interface from an exact one, given as a signed

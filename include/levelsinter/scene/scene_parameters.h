@@ -43,7 +43,7 @@ namespace levelsinter
 
     struct Geometry
     {
-      std::string shape; // "particles" or "slotted disk"
+      std::string shape; // "particles", "slotted disk", "perturbed particle"
       // Inline particles and the particle file are merged: x, y[, z], r.
       std::vector<std::vector<double>> particles;
       std::string                      particle_file;
@@ -51,6 +51,10 @@ namespace levelsinter
       double                           slotted_disk_radius = 0;
       double                           slot_width          = 0;
       double                           slot_depth          = 0;
+      // "perturbed particle": the first particle, radius modulated by one
+      // mode (Mullins test of surface diffusion).
+      double       perturbation_amplitude = 0;
+      unsigned int perturbation_mode      = 2;
     } geometry;
 
     struct LevelSet
@@ -91,6 +95,28 @@ namespace levelsinter
       std::string         expression;
       std::string         expression_constants;
     } velocity;
+
+    // Surface diffusion (paper Sect. 5): v_n = C_s Delta_s kappa.
+    struct SurfaceDiffusion
+    {
+      bool        enabled     = false;
+      double      coefficient = 0; // C_s; 0: from the material entries
+      double      diffusivity = 0; // D_s
+      double      layer_thickness = 0; // delta_s
+      double      surface_energy  = 0; // gamma_sf
+      double      atomic_volume   = 0; // Omega
+      double      thermal_energy  = 0; // kT
+      std::string time_unit        = "seconds"; // or "reduced": t* = C_s t/R^4
+      double      reference_radius = 0;         // R of t*
+      bool        coupled          = true;      // mixed (Eq. 82) or decoupled
+      double      solver_tolerance = 1e-8;
+      std::string linear_solver    = "direct"; // or "gmres"
+      bool        volume_correction = false;   // v^c, Eq. 113-116
+
+      /** C_s = D_s delta_s gamma_sf Omega / kT, or the given coefficient. */
+      double
+      surface_mobility() const;
+    } surface_diffusion;
 
     struct Output
     {

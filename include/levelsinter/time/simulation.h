@@ -17,6 +17,7 @@
 #include <levelsinter/scene/scene_parameters.h>
 
 #include <chrono>
+#include <functional>
 #include <memory>
 
 namespace levelsinter
@@ -62,6 +63,18 @@ namespace levelsinter
      */
     void
     set_level_set(const Function<dim> &filtered_level_set);
+
+    /**
+     * Called after every step with (step, t, alpha): lets a test measure the
+     * interface as it evolves without writing files.
+     */
+    void
+    set_step_observer(
+      const std::function<void(unsigned int, double, const LevelSetField<dim> &)>
+        &observer)
+    {
+      step_observer = observer;
+    }
 
     const LevelSetField<dim> &
     level_set() const
@@ -126,5 +139,7 @@ namespace levelsinter
     unsigned int                              last_iterations  = 0;
     bool                                      initialised      = false;
     std::chrono::steady_clock::time_point     start;
+    std::function<void(unsigned int, double, const LevelSetField<dim> &)>
+      step_observer;
   };
 } // namespace levelsinter

@@ -1,0 +1,136 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
+
+#include <array>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The curvature kappa = div n and the surface Laplacian term
+   * v_s = C Delta_s kappa of the level set, both Q1 on the level set's DoFs,
+   * from the mixed system of Eq. 82 (derivation and signs in
+   * doc/numerics.md):
+   *
+   *   (kappa, psi) - dt (grad v_s / A, grad psi) = -(grad d / A, grad psi)
+   *   C (g P grad kappa, grad psi) + (g v_s, psi)  = 0
+   *
+   * with d the distance the filtered alpha stands for, g = |grad d|,
+   * A = |grad(d - dt v_s^{n-1})| (Eq. 81) and P = I - n (x) n (Eq. 77). The
+   * dt term (Eq. 80) makes the step implicit in the fourth-order operator.
+   * With `coupled = false` dt is dropped there: the decoupled scheme
+   * (kappa, then v_s), kept to measure what the coupling buys.
+   *
+   * Solver: v_s is scaled by s = sqrt(C/dt), which turns the system into
+   * [[M, -b K_A], [b L, M_g]] with b = sqrt(C dt); GMRES is preconditioned
+   * by the PRESB block matrix [[M, -b K], [b K, M + 2 b K]] (K the plain
+   * stiffness matrix), whose inverse needs two solves with M + b K (one AMG
+   * V-cycle each). For K_A = L = K it bounds the preconditioned spectrum in
+   * [1/2, 1] independently of h and dt (Axelsson, Neytcheva, Boyanova), so
+   * the iteration count stays flat under refinement.
+   */
+  template <int dim>
+  class MixedCurvatureSolver
+  {
+  public:
+    using Vector      = TrilinosWrappers::MPI::Vector;
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
+
+    struct Settings
+    {
+      bool         coupled        = true;
+      // KLU on the assembled 2x2 system, or GMRES (see the class comment).
+      bool         direct         = true;
+      double       tolerance      = 1e-8;
+      unsigned int max_iterations = 500;
+    };
+
+    MixedCurvatureSolver(const LevelSetFilter &filter,
+                         const Settings       &settings,
+                         TimerOutput          &timer);
+
+    /** Size matrices and vectors for the level set's DoFs; after remeshing. */
+    void
+    setup(const LevelSetField<dim> &level_set);
+
+    /**
+     * Solve for kappa and v_s = C Delta_s kappa at the level set's current
+     * state; @p previous_velocity is v_s^{n-1} on the same DoFs (ghosted)
+     * for A^n, or an empty vector (A = |grad d|). Returns the iterations.
+     */
+    unsigned int
+    solve(const LevelSetField<dim> &level_set,
+          const double              coefficient,
+          const double              dt,
+          const Vector             &previous_velocity);
+
+    /** kappa (ghosted): 1/R on a circle, 2/R on a sphere. */
+    const Vector &
+    curvature() const
+    {
+      return kappa;
+    }
+
+    /** v_s = C Delta_s kappa (ghosted), the outward normal speed (Eq. 75). */
+    const Vector &
+    normal_velocity() const
+    {
+      return velocity;
+    }
+
+    /** Nodal-averaged unit normals N_alpha (Eq. 84), one vector per axis. */
+    const std::array<Vector, dim> &
+    nodal_normals() const
+    {
+      return normals;
+    }
+
+  private:
+    bool
+    in_band(const LevelSetField<dim>                             &level_set,
+            const typename DoFHandler<dim>::active_cell_iterator &cell) const;
+
+    void
+    compute_normals(const LevelSetField<dim> &level_set);
+
+    void
+    assemble(const LevelSetField<dim> &level_set,
+             const double              coefficient,
+             const double              dt,
+             const Vector             &previous_velocity);
+
+    unsigned int
+    solve_coupled(const LevelSetField<dim> &level_set, const double scale);
+
+    unsigned int
+    solve_direct(const LevelSetField<dim> &level_set, const double scale);
+
+    unsigned int
+    solve_decoupled(const LevelSetField<dim> &level_set);
+
+    const LevelSetFilter filter;
+    const Settings       settings;
+    TimerOutput         &timer;
+
+    // Blocks of the (scaled) system, rows (kappa, v_s), and M + b K.
+    TrilinosWrappers::SparseMatrix kk, kv, vk, vv, presb;
+    Vector                         rhs;
+    Vector                         kappa;
+    Vector                         velocity;
+    std::array<Vector, dim>        normals;
+
+  public:
+    /** CG iterations of the inner solves in the last coupled solve. */
+    unsigned int inner_iterations = 0;
+  };
+} // namespace levelsinter

@@ -1,0 +1,481 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/solver_gmres.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <levelsinter/geometry/mixed_curvature_solver.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    using SparseMatrix = TrilinosWrappers::SparseMatrix;
+    using Vector       = TrilinosWrappers::MPI::Vector;
+    using BlockVector  = TrilinosWrappers::MPI::BlockVector;
+
+    // The 2x2 block system [[kk, kv], [vk, vv]] acting on (kappa, w).
+    struct BlockSystem
+    {
+      const SparseMatrix &kk, &kv, &vk, &vv;
+
+      void
+      vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        kk.vmult(dst.block(0), src.block(0));
+        kv.vmult_add(dst.block(0), src.block(1));
+        vk.vmult(dst.block(1), src.block(0));
+        vv.vmult_add(dst.block(1), src.block(1));
+      }
+    };
+
+    // x = A^-1 b for an SPD block by CG with AMG, to a relative tolerance.
+    class InnerSolve
+    {
+    public:
+      InnerSolve(const SparseMatrix &matrix, const double tolerance)
+        : matrix(matrix)
+        , tolerance(tolerance)
+      {
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic = true;
+        amg.initialize(matrix, data);
+      }
+
+      void
+      vmult(Vector &dst, const Vector &src) const
+      {
+        dst = 0;
+        SolverControl    control(1000, tolerance * src.l2_norm());
+        SolverCG<Vector> cg(control);
+        cg.solve(matrix, dst, src, amg);
+        iterations += control.last_step();
+      }
+
+      mutable unsigned int iterations = 0;
+
+    private:
+      const SparseMatrix                &matrix;
+      const double                       tolerance;
+      TrilinosWrappers::PreconditionAMG amg;
+    };
+
+    // Inverse of the block upper-triangular factor of the block LU
+    // factorisation, [[M, -b K_A], [0, S]], S = M_g + b^2 L M^-1 K_A the
+    // Schur complement of v_s. S is replaced by
+    // (M + b L_s) M^-1 (M + b L_s), L_s the tangential stiffness with the
+    // mean weight: it matches S within a factor 2 on modes along the
+    // level sets (where K_A ~ L) and equals M on modes across them (where
+    // L vanishes). M^-1 and (M + b L_s)^-1 are inner CG + AMG solves to a
+    // loose tolerance, hence flexible GMRES outside. Measured: it does not
+    // keep the iterations flat yet (doc/numerics.md).
+    struct SchurPreconditioner
+    {
+      const SparseMatrix &mass;
+      const SparseMatrix &coupling;
+      const InnerSolve   &mass_inverse;
+      const InnerSolve   &shifted;
+
+      void
+      vmult(BlockVector &dst, const BlockVector &src) const
+      {
+        a.reinit(src.block(0), true);
+        c.reinit(src.block(0), true);
+        shifted.vmult(a, src.block(1));
+        mass.vmult(c, a);
+        shifted.vmult(dst.block(1), c);
+        // kappa: M x = f - kv y (kv already holds -b K_A).
+        coupling.vmult(a, dst.block(1));
+        a *= -1;
+        a += src.block(0);
+        mass_inverse.vmult(dst.block(0), a);
+      }
+
+      mutable Vector a = {}, c = {};
+    };
+  } // namespace
+
+  template <int dim>
+  MixedCurvatureSolver<dim>::MixedCurvatureSolver(const LevelSetFilter &filter,
+                                                  const Settings &settings,
+                                                  TimerOutput    &timer)
+    : filter(filter)
+    , settings(settings)
+    , timer(timer)
+  {}
+
+  template <int dim>
+  void
+  MixedCurvatureSolver<dim>::setup(const LevelSetField<dim> &level_set)
+  {
+    const auto    &dofs  = level_set.dof_handler();
+    const MPI_Comm comm  = dofs.get_communicator();
+    const auto    &owned = level_set.locally_owned();
+    DynamicSparsityPattern dsp(level_set.locally_relevant());
+    DoFTools::make_sparsity_pattern(dofs, dsp, level_set.constraints(), false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned,
+                                               comm,
+                                               level_set.locally_relevant());
+    for (auto *m : {&kk, &kv, &vk, &vv, &presb})
+      m->reinit(owned, owned, dsp, comm);
+    rhs.reinit(owned, comm);
+    kappa.reinit(owned, level_set.locally_relevant(), comm);
+    velocity.reinit(owned, level_set.locally_relevant(), comm);
+  }
+
+  template <int dim>
+  bool
+  MixedCurvatureSolver<dim>::in_band(
+    const LevelSetField<dim>                             &level_set,
+    const typename DoFHandler<dim>::active_cell_iterator &cell) const
+  {
+    // Cells whose every vertex is where the filter still has slope > 0.3,
+    // i.e. |d| < 0.8 E: alpha carries the geometry there. Beyond, alpha
+    // saturates and the normal is undefined.
+    for (const unsigned int v : cell->vertex_indices())
+      if (filter.gradient_norm_target(
+            level_set.alpha()(cell->vertex_dof_index(v, 0))) < 0.3)
+        return false;
+    return true;
+  }
+
+  template <int dim>
+  void
+  MixedCurvatureSolver<dim>::compute_normals(const LevelSetField<dim> &level_set)
+  {
+    // Eq. 84: sum the cell normals (the gradient of Q1 at the cell centre)
+    // at each node, then normalise.
+    const auto    &dofs = level_set.dof_handler();
+    const MPI_Comm comm = dofs.get_communicator();
+    std::array<Vector, dim> sums;
+    for (auto &sum : sums)
+      sum.reinit(level_set.locally_owned(), level_set.locally_relevant(), comm, true);
+    const QMidpoint<dim>        centre;
+    FEValues<dim>               fe_values(level_set.fe(), centre, update_gradients);
+    std::vector<Tensor<1, dim>> gradient(1);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values.get_function_gradients(level_set.alpha(), gradient);
+          const double norm = gradient[0].norm();
+          if (norm == 0)
+            continue;
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < dim; ++c)
+              sums[c](cell->vertex_dof_index(v, 0)) += gradient[0][c] / norm;
+        }
+    for (auto &sum : sums)
+      sum.compress(VectorOperation::add);
+    std::array<Vector, dim> owned_normals;
+    for (unsigned int c = 0; c < dim; ++c)
+      owned_normals[c].reinit(level_set.locally_owned(), comm);
+    for (const auto i : level_set.locally_owned())
+      {
+        double norm2 = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          norm2 += sums[c](i) * sums[c](i);
+        if (norm2 > 0)
+          for (unsigned int c = 0; c < dim; ++c)
+            owned_normals[c](i) = sums[c](i) / std::sqrt(norm2);
+      }
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        owned_normals[c].compress(VectorOperation::insert);
+        level_set.constraints().distribute(owned_normals[c]);
+        normals[c].reinit(level_set.locally_owned(),
+                          level_set.locally_relevant(),
+                          comm);
+        normals[c] = owned_normals[c];
+      }
+  }
+
+  template <int dim>
+  void
+  MixedCurvatureSolver<dim>::assemble(const LevelSetField<dim> &level_set,
+                                      const double              coefficient,
+                                      const double              dt,
+                                      const Vector &previous_velocity)
+  {
+    TimerOutput::Scope scope(timer, "curvature assembly");
+    compute_normals(level_set);
+    for (auto *m : {&kk, &kv, &vk, &vv, &presb})
+      *m = 0;
+    rhs = 0;
+
+    const bool   coupled = settings.coupled && dt > 0;
+    const double b       = std::sqrt(coefficient * dt);
+    // Row factors of the off-diagonal blocks: scaled system when coupled,
+    // plain (kappa then v_s = -C M_g^{-1} L kappa) when not.
+    const double kv_factor = coupled ? -b : 0.;
+    const double vk_factor = coupled ? b : coefficient;
+    const double lag       = previous_velocity.size() > 0 ? dt : 0.;
+
+    const QGauss<dim>  quadrature(2);
+    FEValues<dim>      fe_values(level_set.fe(),
+                            quadrature,
+                            update_values | update_gradients |
+                              update_JxW_values);
+    const unsigned int n  = level_set.fe().dofs_per_cell;
+    const unsigned int nq = quadrature.size();
+    FullMatrix<double> m_kk(n, n), m_kv(n, n), m_vk(n, n), m_vv(n, n),
+      m_s(n, n);
+    dealii::Vector<double>               local_rhs(n);
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<double>                  alpha_values(nq);
+    std::vector<Tensor<1, dim>> alpha_gradients(nq), lag_gradients(nq),
+      normal_gradients(nq);
+    std::vector<double> divergence(nq);
+
+    // DoFs no band cell touches get kappa = v_s = 0 (identity rows).
+    Vector touched;
+    touched.reinit(level_set.locally_owned(),
+                   level_set.locally_relevant(),
+                   level_set.dof_handler().get_communicator(),
+                   true);
+
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && in_band(level_set, cell))
+        {
+          fe_values.reinit(cell);
+          fe_values.get_function_values(level_set.alpha(), alpha_values);
+          fe_values.get_function_gradients(level_set.alpha(), alpha_gradients);
+          if (lag > 0)
+            fe_values.get_function_gradients(previous_velocity, lag_gradients);
+          std::fill(divergence.begin(), divergence.end(), 0.);
+          for (unsigned int c = 0; c < dim; ++c)
+            {
+              fe_values.get_function_gradients(normals[c], normal_gradients);
+              for (unsigned int q = 0; q < nq; ++q)
+                divergence[q] += normal_gradients[q][c];
+            }
+          m_kk = 0;
+          m_kv = 0;
+          m_vk = 0;
+          m_vv = 0;
+          m_s  = 0;
+          local_rhs = 0;
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              // grad d = grad alpha / f'(d): the filter undone, |grad d| = 1
+              // for a perfectly reinitialised alpha.
+              const double slope =
+                std::max(filter.gradient_norm_target(alpha_values[q]), 0.1);
+              const double   grad_norm = alpha_gradients[q].norm();
+              Tensor<2, dim> P         = unit_symmetric_tensor<dim>();
+              if (grad_norm > 0)
+                {
+                  const Tensor<1, dim> normal = alpha_gradients[q] / grad_norm;
+                  P -= outer_product(normal, normal);
+                }
+              const Tensor<1, dim> grad_d = alpha_gradients[q] / slope;
+              // Clipped so that a badly reinitialised cell cannot make the
+              // weights vanish or explode.
+              const double g = std::clamp(grad_d.norm(), 0.2, 5.);
+              const double A =
+                std::clamp((grad_d - lag * lag_gradients[q]).norm(), 0.2, 5.);
+              const double JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const double          phi_i    = fe_values.shape_value(i, q);
+                  const Tensor<1, dim> &grad_i   = fe_values.shape_grad(i, q);
+                  const Tensor<1, dim>  P_grad_i = P * grad_i;
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const double phi_j = fe_values.shape_value(j, q);
+                      const Tensor<1, dim> &grad_j = fe_values.shape_grad(j, q);
+                      const double mass       = phi_i * phi_j * JxW;
+                      const double tangential = P_grad_i * grad_j * JxW;
+                      m_kk(i, j) += mass;
+                      m_kv(i, j) += kv_factor * (grad_i * grad_j) * JxW / A;
+                      m_vk(i, j) += vk_factor * g * tangential;
+                      m_vv(i, j) += g * mass;
+                      m_s(i, j) += mass + b * 0.5 * (g + 1 / A) * tangential;
+                    }
+                  // kappa = div N (Eq. 80 at dt = 0), not integrated by
+                  // parts: the band has no boundary term to lose.
+                  local_rhs(i) += divergence[q] * phi_i * JxW;
+                }
+            }
+          cell->get_dof_indices(indices);
+          const auto &constraints = level_set.constraints();
+          constraints.distribute_local_to_global(m_kk, local_rhs, indices, kk, rhs);
+          constraints.distribute_local_to_global(m_vv, indices, vv);
+          constraints.distribute_local_to_global(m_s, indices, presb);
+          // Off-diagonal blocks: no diagonal entries on constrained rows.
+          constraints.distribute_local_to_global(m_kv, indices, indices, kv);
+          constraints.distribute_local_to_global(m_vk, indices, indices, vk);
+          for (const auto i : indices)
+            touched(i) += 1;
+        }
+    for (auto *m : {&kk, &kv, &vk, &vv, &presb})
+      m->compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    touched.compress(VectorOperation::add);
+    for (const auto i : level_set.locally_owned())
+      if (touched(i) == 0)
+        for (auto *m : {&kk, &vv, &presb})
+          m->set(i, i, 1.);
+    for (auto *m : {&kk, &vv, &presb})
+      m->compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  unsigned int
+  MixedCurvatureSolver<dim>::solve(const LevelSetField<dim> &level_set,
+                                   const double              coefficient,
+                                   const double              dt,
+                                   const Vector &previous_velocity)
+  {
+    assemble(level_set, coefficient, dt, previous_velocity);
+    TimerOutput::Scope scope(timer, "curvature solve");
+    if (settings.coupled && dt > 0)
+      {
+        if (settings.direct)
+          return solve_direct(level_set, std::sqrt(coefficient / dt));
+        return solve_coupled(level_set, std::sqrt(coefficient / dt));
+      }
+    return solve_decoupled(level_set);
+  }
+
+  template <int dim>
+  unsigned int
+  MixedCurvatureSolver<dim>::solve_coupled(const LevelSetField<dim> &level_set,
+                                           const double              scale)
+  {
+    const MPI_Comm comm  = level_set.dof_handler().get_communicator();
+    const auto    &owned = level_set.locally_owned();
+    BlockVector    solution({owned, owned}, comm);
+    BlockVector    block_rhs({owned, owned}, comm);
+    block_rhs.block(0) = rhs;
+
+    const InnerSolve  mass_amg(kk, 1e-2), amg(presb, 1e-2);
+    const BlockSystem block_system{kk, kv, vk, vv};
+    const SchurPreconditioner preconditioner{kk, kv, mass_amg, amg};
+    SolverControl control(settings.max_iterations,
+                          settings.tolerance * block_rhs.l2_norm());
+    unsigned int  iterations = 0;
+    if (block_rhs.l2_norm() > 0)
+      {
+        SolverFGMRES<BlockVector> gmres(
+          control, SolverFGMRES<BlockVector>::AdditionalData(100));
+        gmres.solve(block_system, solution, block_rhs, preconditioner);
+        iterations = control.last_step();
+        inner_iterations = mass_amg.iterations + amg.iterations;
+      }
+
+    const auto &constraints = level_set.constraints();
+    constraints.distribute(solution.block(0));
+    constraints.distribute(solution.block(1));
+    kappa = solution.block(0);
+    solution.block(1) *= scale;
+    velocity = solution.block(1);
+    return iterations;
+  }
+
+  template <int dim>
+  unsigned int
+  MixedCurvatureSolver<dim>::solve_direct(const LevelSetField<dim> &level_set,
+                                          const double              scale)
+  {
+    // The four blocks copied into one matrix, kappa_i -> i, v_i -> N + i,
+    // factorised by KLU (Amesos): robust for any dt / h^4, serial in the
+    // factorisation.
+    const MPI_Comm  comm = level_set.dof_handler().get_communicator();
+    const auto      n    = level_set.dof_handler().n_dofs();
+    const IndexSet &owned = level_set.locally_owned();
+    IndexSet        owned2(2 * n), relevant2(2 * n);
+    owned2.add_indices(owned);
+    owned2.add_indices(owned, n);
+    relevant2.add_indices(level_set.locally_relevant());
+    relevant2.add_indices(level_set.locally_relevant(), n);
+    DynamicSparsityPattern dsp(relevant2);
+    const std::array<std::pair<const SparseMatrix *, std::array<types::global_dof_index, 2>>, 4>
+      blocks = {{{&kk, {{0, 0}}}, {&kv, {{0, n}}}, {&vk, {{n, 0}}}, {&vv, {{n, n}}}}};
+    for (const auto &[block, offset] : blocks)
+      for (const auto row : owned)
+        for (auto entry = block->begin(row); entry != block->end(row); ++entry)
+          dsp.add(row + offset[0], entry->column() + offset[1]);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned2, comm, relevant2);
+    TrilinosWrappers::SparseMatrix matrix;
+    matrix.reinit(owned2, owned2, dsp, comm);
+    for (const auto &[block, offset] : blocks)
+      for (const auto row : owned)
+        for (auto entry = block->begin(row); entry != block->end(row); ++entry)
+          matrix.set(row + offset[0], entry->column() + offset[1], entry->value());
+    matrix.compress(VectorOperation::insert);
+
+    Vector full_rhs(owned2, comm), full_solution(owned2, comm);
+    for (const auto i : owned)
+      full_rhs(i) = rhs(i);
+    full_rhs.compress(VectorOperation::insert);
+    SolverControl                  control;
+    TrilinosWrappers::SolverDirect direct(control);
+    direct.solve(matrix, full_solution, full_rhs);
+
+    Vector k(owned, comm), v(owned, comm);
+    for (const auto i : owned)
+      {
+        k(i) = full_solution(i);
+        v(i) = scale * full_solution(i + n);
+      }
+    k.compress(VectorOperation::insert);
+    v.compress(VectorOperation::insert);
+    level_set.constraints().distribute(k);
+    level_set.constraints().distribute(v);
+    kappa    = k;
+    velocity = v;
+    return 1;
+  }
+
+  template <int dim>
+  unsigned int
+  MixedCurvatureSolver<dim>::solve_decoupled(const LevelSetField<dim> &level_set)
+  {
+    const MPI_Comm comm  = level_set.dof_handler().get_communicator();
+    const auto    &owned = level_set.locally_owned();
+    Vector         k(owned, comm), v(owned, comm), vrhs(owned, comm);
+    const auto    &constraints = level_set.constraints();
+    unsigned int   iterations  = 0;
+
+    // Two mass-matrix solves: Jacobi-preconditioned CG converges in a
+    // number of steps independent of h.
+    auto mass_solve = [&](const SparseMatrix &m, Vector &x, const Vector &f) {
+      if (f.l2_norm() == 0)
+        return;
+      TrilinosWrappers::PreconditionJacobi jacobi;
+      jacobi.initialize(m);
+      SolverControl      control(settings.max_iterations,
+                            settings.tolerance * f.l2_norm());
+      SolverCG<Vector> cg(control);
+      cg.solve(m, x, f, jacobi);
+      iterations += control.last_step();
+    };
+    mass_solve(kk, k, rhs);
+    constraints.distribute(k);
+    vk.vmult(vrhs, k);
+    vrhs *= -1;
+    mass_solve(vv, v, vrhs);
+    constraints.distribute(v);
+    kappa    = k;
+    velocity = v;
+    return iterations;
+  }
+
+  template class MixedCurvatureSolver<2>;
+  template class MixedCurvatureSolver<3>;
+} // namespace levelsinter

@@ -1,0 +1,120 @@
+#include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/mechanisms/surface_diffusion.h>
+
+#include <cmath>
+
+namespace levelsinter
+{
+  namespace
+  {
+    double
+    coefficient_in_scene_time(const SceneParameters::SurfaceDiffusion &p)
+    {
+      if (p.time_unit == "reduced")
+        return std::pow(p.reference_radius, 4);
+      return p.surface_mobility();
+    }
+  } // namespace
+
+  template <int dim>
+  SurfaceDiffusion<dim>::SurfaceDiffusion(
+    const SceneParameters::SurfaceDiffusion &parameters,
+    const LevelSetFilter                    &filter,
+    TimerOutput                             &timer)
+    : mobility(coefficient_in_scene_time(parameters))
+    , volume_correction(parameters.volume_correction)
+    , solver(filter,
+             {parameters.coupled,
+              parameters.linear_solver == "direct",
+              parameters.solver_tolerance,
+              1000},
+             timer)
+    , timer(timer)
+  {}
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::setup(const LevelSetField<dim> &alpha)
+  {
+    solver.setup(alpha);
+    // v_s^{n-1} lives on the old mesh; A^n falls back to |grad d| for the
+    // first step after a remesh (a second-order change in kappa).
+    previous_velocity.clear();
+    solved_time = -1;
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::add_velocity(const LevelSetField<dim> &alpha,
+                                      const double              t,
+                                      const double              dt,
+                                      VelocityField<dim>       &velocity)
+  {
+    if (solved_time >= 0 && t > solved_time)
+      previous_velocity = solver.normal_velocity();
+    iterations  = solver.solve(alpha, mobility, dt, previous_velocity);
+    solved_time = t;
+
+    TimerOutput::Scope scope(timer, "surface diffusion velocity");
+    // Eq. 113-116: a uniform normal speed that gives back, over this step,
+    // the solid volume lost or gained since t = 0 (by the scheme and by the
+    // reinitialisation alike).
+    correction_speed = 0;
+    if (volume_correction)
+      {
+        const auto measures = interface_measures::volume_and_area(alpha);
+        if (initial_volume < 0)
+          initial_volume = measures.solid_volume;
+        if (dt > 0 && measures.interface_area > 0)
+          correction_speed = (initial_volume - measures.solid_volume) /
+                             (dt * measures.interface_area);
+      }
+
+    // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
+    // vertices; the velocity space numbers them its own way.
+    const auto    &ls_dofs = alpha.dof_handler();
+    const auto    &normals = solver.nodal_normals();
+    const auto    &v_s     = solver.normal_velocity();
+    TrilinosWrappers::MPI::Vector increment(velocity.locally_owned(),
+                                            ls_dofs.get_communicator());
+    for (const auto &cell : ls_dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator v_cell(
+            &ls_dofs.get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &velocity.dof_handler());
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const auto i = cell->vertex_dof_index(v, 0);
+              for (unsigned int c = 0; c < dim; ++c)
+                {
+                  const auto index = v_cell->vertex_dof_index(v, c);
+                  if (velocity.locally_owned().is_element(index))
+                    increment(index) =
+                      (v_s(i) + correction_speed) * normals[c](i);
+                }
+            }
+        }
+    increment.compress(VectorOperation::insert);
+    velocity.add(increment);
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  SurfaceDiffusion<dim>::metric_names() const
+  {
+    return {"surface_diffusion_iterations", "volume_correction_speed"};
+  }
+
+  template <int dim>
+  std::vector<double>
+  SurfaceDiffusion<dim>::metric_values() const
+  {
+    return {double(iterations), correction_speed};
+  }
+
+  template class SurfaceDiffusion<2>;
+  template class SurfaceDiffusion<3>;
+} // namespace levelsinter
