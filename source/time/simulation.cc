@@ -262,7 +262,11 @@ namespace levelsinter
          step % scene.output.progress_interval == 0) ||
         final_step)
       {
-        const double fraction = t / scene.time.end_time;
+        // The run ends at the end time or after the step limit, whichever
+        // comes first.
+        const double fraction = std::max(
+          t / scene.time.end_time,
+          scene.time.max_steps > 0 ? double(step) / scene.time.max_steps : 0.);
         const double eta =
           fraction > 0 ? wall * (1 - fraction) / fraction : 0.;
         pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
