@@ -24,7 +24,7 @@ if len(sys.argv) < 3:
 
 fig, axes = plt.subplots(1, 2, figsize=(11, 4.5))
 for item in sys.argv[2:]:
-    label, path = item.split("=", 1)
+    label, path = item.rsplit("=", 1)
     with open(path) as f:
         rows = list(csv.DictReader(f))
     wall = [float(r["cpu_time"]) for r in rows]
