@@ -41,16 +41,31 @@ namespace
   void
   run(const SceneParameters &scene, const MPI_Comm comm)
   {
-    Simulation<dim> simulation(scene, comm, std::cout);
-    prepare_output_directory(scene.output.directory, comm);
-    const auto summary = simulation.run();
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      std::cout << "done: " << summary.steps << " steps to t = "
-                << summary.time << " in " << summary.wall_time
-                << " s; at most " << summary.max_cells << " cells, "
-                << summary.max_dofs << " DoFs; mean GMRES iterations "
-                << summary.mean_iterations << "\n";
-    simulation.timer().print_wall_time_statistics(comm);
+    // A failure inside the run is reported after the simulation has been
+    // destroyed normally (its timers communicate in their destructors),
+    // with the time per phase up to the failure.
+    std::string failure;
+    {
+      Simulation<dim> simulation(scene, comm, std::cout);
+      prepare_output_directory(scene.output.directory, comm);
+      try
+        {
+          const auto summary = simulation.run();
+          if (Utilities::MPI::this_mpi_process(comm) == 0)
+            std::cout << "done: " << summary.steps << " steps to t = "
+                      << summary.time << " in " << summary.wall_time
+                      << " s; at most " << summary.max_cells << " cells, "
+                      << summary.max_dofs << " DoFs; mean GMRES iterations "
+                      << summary.mean_iterations << "\n";
+        }
+      catch (const std::exception &e)
+        {
+          failure = e.what();
+        }
+      simulation.timer().print_wall_time_statistics(comm);
+    }
+    if (!failure.empty())
+      throw std::runtime_error(failure);
   }
 } // namespace
 

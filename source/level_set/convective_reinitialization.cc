@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 
 namespace levelsinter
@@ -242,7 +244,20 @@ namespace levelsinter
     SolverControl control(settings.max_iterations,
                           settings.solver_tolerance * rhs.l2_norm());
     TrilinosWrappers::SolverGMRES solver(control);
-    solver.solve(matrix, solution, rhs, preconditioner);
+    try
+      {
+        solver.solve(matrix, solution, rhs, preconditioner);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        std::ostringstream message;
+        message << "GMRES of the level-set transport did not converge in "
+                << e.last_step << " iterations (residual " << std::scientific
+                << std::setprecision(2) << e.last_residual
+                << "); raise Level set/Maximum solver iterations or lower "
+                   "the CFL number";
+        throw std::runtime_error(message.str());
+      }
     if (!std::isfinite(solution.l2_norm()))
       throw std::runtime_error(
         "the level set became non-finite in the transport step; reduce the "

@@ -280,6 +280,52 @@ namespace levelsinter
   }
 
   template <int dim>
+  double
+  Simulation<dim>::take_step(const double t)
+  {
+    // A step that fails (a solver that does not converge, a non-finite
+    // field) is taken again from the same alpha with half the step, up to
+    // three times; then the run stops with the last diagnosis.
+    const unsigned int            max_retries = 3;
+    TrilinosWrappers::MPI::Vector start_of_step(alpha.locally_owned(), comm);
+    start_of_step = alpha.alpha();
+    double dt     = choose_time_step(t);
+    for (unsigned int retry = 0;; ++retry)
+      try
+        {
+          // dt comes from the velocity of the previous step; if this
+          // step's velocity is much faster, the step is chosen again.
+          compute_interface_velocity(t, dt);
+          for (unsigned int k = 0; scene.time.cfl > 0 &&
+                                   interface_speed * dt >
+                                     1.5 * scene.time.cfl * h_min &&
+                                   k < 5;
+               ++k)
+            {
+              dt = std::min(dt, choose_time_step(t));
+              compute_interface_velocity(t, dt);
+            }
+          last_iterations = transport.advance(alpha, velocity, dt);
+          return dt;
+        }
+      catch (const std::exception &failure)
+        {
+          if (retry == max_retries)
+            throw std::runtime_error(
+              "the step from t = " + std::to_string(t) + " failed " +
+              std::to_string(max_retries + 1) +
+              " times, the last time with dt = " + std::to_string(dt) +
+              ": " + failure.what());
+          pcout << "step from t = " << t << " with dt = " << dt
+                << " failed; retrying with dt = " << dt / 2 << ". Reason: "
+                << failure.what() << std::endl;
+          TrilinosWrappers::MPI::Vector copy(start_of_step);
+          alpha.set_from_owned(copy);
+          dt /= 2;
+        }
+  }
+
+  template <int dim>
   typename Simulation<dim>::Summary
   Simulation<dim>::run()
   {
@@ -307,22 +353,9 @@ namespace levelsinter
         if (step > 0 && step % scene.refinement.adapt_interval == 0)
           adapt_mesh();
 
-        // 1. Interface velocity for t -> t + dt. dt comes from the velocity
-        //    of the previous step; if this step's velocity is much faster,
-        //    the step is chosen again from it.
-        double dt = choose_time_step(t);
-        compute_interface_velocity(t, dt);
-        for (unsigned int retry = 0;
-             scene.time.cfl > 0 &&
-             interface_speed * dt > 1.5 * scene.time.cfl * h_min && retry < 5;
-             ++retry)
-          {
-            dt = choose_time_step(t);
-            compute_interface_velocity(t, dt);
-          }
-
-        // 2. Transport with convective reinitialisation (Eq. 68).
-        last_iterations = transport.advance(alpha, velocity, dt);
+        // 1.-2. Interface velocity and transport with convective
+        //       reinitialisation (Eq. 68); a failed step is retried.
+        const double dt = take_step(t);
         total_iterations += last_iterations;
         t += dt;
         ++step;

@@ -112,6 +112,8 @@ namespace levelsinter
     speed_near_interface() const;
     void
     compute_interface_velocity(const double t, const double dt);
+    double
+    take_step(const double t);
     void
     record(const unsigned int step,
            const double       t,
