@@ -124,12 +124,7 @@ namespace levelsinter
     const auto    &dofs  = level_set.dof_handler();
     const MPI_Comm comm  = dofs.get_communicator();
     const auto    &owned = level_set.locally_owned();
-    DynamicSparsityPattern dsp(level_set.locally_relevant());
-    DoFTools::make_sparsity_pattern(dofs, dsp, level_set.constraints(), false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned,
-                                               comm,
-                                               level_set.locally_relevant());
+    const DynamicSparsityPattern dsp = level_set.sparsity_pattern();
     for (auto *m : {&kk, &kv, &vk, &vv, &presb})
       m->reinit(owned, owned, dsp, comm);
     rhs.reinit(owned, comm);

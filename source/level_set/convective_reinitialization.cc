@@ -36,16 +36,10 @@ namespace levelsinter
   ConvectiveReinitialization<dim>::setup_system(
     const LevelSetField<dim> &level_set)
   {
-    const auto           &dofs = level_set.dof_handler();
-    DynamicSparsityPattern dsp(level_set.locally_relevant());
-    DoFTools::make_sparsity_pattern(dofs, dsp, level_set.constraints(), false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               level_set.locally_owned(),
-                                               dofs.get_communicator(),
-                                               level_set.locally_relevant());
+    const auto &dofs = level_set.dof_handler();
     matrix.reinit(level_set.locally_owned(),
                   level_set.locally_owned(),
-                  dsp,
+                  level_set.sparsity_pattern(),
                   dofs.get_communicator());
     h_min = GridTools::minimal_cell_diameter(dofs.get_triangulation()) /
             std::sqrt(double(dim));

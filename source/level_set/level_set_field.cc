@@ -2,6 +2,8 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/lac/sparsity_tools.h>
+
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/level_set/level_set_field.h>
@@ -41,6 +43,19 @@ namespace levelsinter
     Vector owned(owned_dofs, dofs.get_communicator());
     VectorTools::interpolate(dofs, filtered_level_set, owned);
     set_from_owned(owned);
+  }
+
+  template <int dim>
+  DynamicSparsityPattern
+  LevelSetField<dim>::sparsity_pattern() const
+  {
+    DynamicSparsityPattern dsp(relevant_dofs);
+    DoFTools::make_sparsity_pattern(dofs, dsp, hanging_node_constraints, false);
+    SparsityTools::distribute_sparsity_pattern(dsp,
+                                               owned_dofs,
+                                               dofs.get_communicator(),
+                                               relevant_dofs);
+    return dsp;
   }
 
   template <int dim>

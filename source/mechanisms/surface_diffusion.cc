@@ -72,33 +72,22 @@ namespace levelsinter
 
     // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
     // vertices; the velocity space numbers them its own way.
-    const auto    &ls_dofs = alpha.dof_handler();
-    const auto    &normals = solver.nodal_normals();
-    const auto    &v_s     = solver.normal_velocity();
-    TrilinosWrappers::MPI::Vector increment(velocity.locally_owned(),
-                                            ls_dofs.get_communicator());
-    for (const auto &cell : ls_dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const typename DoFHandler<dim>::active_cell_iterator v_cell(
-            &ls_dofs.get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &velocity.dof_handler());
-          for (const unsigned int v : cell->vertex_indices())
-            {
-              const auto i = cell->vertex_dof_index(v, 0);
-              for (unsigned int c = 0; c < dim; ++c)
-                {
-                  const auto index = v_cell->vertex_dof_index(v, c);
-                  if (velocity.locally_owned().is_element(index))
-                    increment(index) =
-                      (v_s(i) + correction_speed) * normals[c](i);
-                }
-            }
-        }
-    increment.compress(VectorOperation::insert);
-    velocity.add(increment);
+    const auto &ls_dofs = alpha.dof_handler();
+    const auto &normals = solver.nodal_normals();
+    const auto &v_s     = solver.normal_velocity();
+    velocity.add_vertex_values([&](const auto &velocity_cell,
+                                   const unsigned int v) {
+      const typename DoFHandler<dim>::active_cell_iterator cell(
+        &velocity_cell->get_triangulation(),
+        velocity_cell->level(),
+        velocity_cell->index(),
+        &ls_dofs);
+      const auto     i = cell->vertex_dof_index(v, 0);
+      Tensor<1, dim> value;
+      for (unsigned int c = 0; c < dim; ++c)
+        value[c] = (v_s(i) + correction_speed) * normals[c](i);
+      return value;
+    });
   }
 
   template <int dim>

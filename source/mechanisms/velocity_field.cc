@@ -64,6 +64,30 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  VelocityField<dim>::add_vertex_values(
+    const std::function<
+      Tensor<1, dim>(const typename DoFHandler<dim>::active_cell_iterator &,
+                     const unsigned int)> &vertex_value)
+  {
+    Vector increment(owned_dofs, dofs.get_communicator());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Tensor<1, dim> value = vertex_value(cell, v);
+            for (unsigned int c = 0; c < dim; ++c)
+              {
+                const auto index = cell->vertex_dof_index(v, c);
+                if (owned_dofs.is_element(index))
+                  increment(index) = value[c];
+              }
+          }
+    increment.compress(VectorOperation::insert);
+    add(increment);
+  }
+
+  template <int dim>
   double
   VelocityField<dim>::max_norm() const
   {

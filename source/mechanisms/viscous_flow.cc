@@ -58,40 +58,23 @@ namespace levelsinter
       last_iterations = operator_->solve();
     }
 
-    // Same mesh, Q1 in both spaces: copy the nodal velocity cell by cell
-    // from the Stokes numbering to the VelocityField numbering.
-    const auto &stokes_fe   = operator_->fe();
-    const auto &velocity_fe = velocity.fe();
+    // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by
+    // vertex (the first dim vertex DoFs of the Stokes element are the
+    // velocity components).
+    const auto &stokes_dofs = operator_->dof_handler();
     const auto &solution    = operator_->solution();
-    TrilinosWrappers::MPI::Vector increment(
-      velocity.locally_owned(),
-      velocity.dof_handler().get_communicator());
-    std::vector<types::global_dof_index> stokes_indices(
-      stokes_fe.dofs_per_cell),
-      velocity_indices(velocity_fe.dofs_per_cell);
-    for (const auto &cell : operator_->dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          cell->get_dof_indices(stokes_indices);
-          const typename DoFHandler<dim>::active_cell_iterator velocity_cell(
-            &cell->get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &velocity.dof_handler());
-          velocity_cell->get_dof_indices(velocity_indices);
-          for (const unsigned int v : cell->vertex_indices())
-            for (unsigned int c = 0; c < dim; ++c)
-              {
-                const auto to =
-                  velocity_indices[velocity_fe.component_to_system_index(c,
-                                                                         v)];
-                if (velocity.locally_owned().is_element(to))
-                  increment(to) = solution(
-                    stokes_indices[stokes_fe.component_to_system_index(c, v)]);
-              }
-        }
-    increment.compress(VectorOperation::insert);
-    velocity.add(increment);
+    velocity.add_vertex_values([&](const auto &velocity_cell,
+                                   const unsigned int v) {
+      const typename DoFHandler<dim>::active_cell_iterator cell(
+        &velocity_cell->get_triangulation(),
+        velocity_cell->level(),
+        velocity_cell->index(),
+        &stokes_dofs);
+      Tensor<1, dim> value;
+      for (unsigned int c = 0; c < dim; ++c)
+        value[c] = solution(cell->vertex_dof_index(v, c));
+      return value;
+    });
   }
 
   template <int dim>

@@ -9,6 +9,7 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
@@ -53,6 +54,14 @@ namespace levelsinter
     /** After refinement: setup_dofs() and move alpha to the new mesh. */
     void
     transfer_after_refinement();
+
+    /**
+     * The sparsity pattern of a matrix on these DoFs with these
+     * constraints, distributed over the ranks: what every scalar system on
+     * the level-set mesh (transport, curvature) is sized with.
+     */
+    DynamicSparsityPattern
+    sparsity_pattern() const;
 
     /** Set the ghosted vector from an owned-only one, applying constraints. */
     void

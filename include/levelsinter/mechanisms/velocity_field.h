@@ -12,6 +12,8 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
+
 namespace levelsinter
 {
   using namespace dealii;
@@ -48,6 +50,17 @@ namespace levelsinter
      */
     void
     add(const Vector &increment);
+
+    /**
+     * v += the vector vertex_value(cell, v) at vertex v of every locally
+     * owned cell (a cell of dof_handler()): how a mechanism that computes a
+     * nodal velocity on its own Q1 space on the same mesh hands it over.
+     */
+    void
+    add_vertex_values(
+      const std::function<
+        Tensor<1, dim>(const typename DoFHandler<dim>::active_cell_iterator &,
+                       const unsigned int)> &vertex_value);
 
     /** Locally owned and locally relevant DoFs of dof_handler(). */
     const IndexSet &
