@@ -394,7 +394,7 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table({"level", "h", "steps", "max_dofs", "wall_time",
+    Table table({"level", "h", "steps", "max_dofs", "wall_time", "cpu_time",
                  "mean_stokes_its", "max_stokes_its", "max_neck_error",
                  "final_neck_error", "area_drift"},
                 options.csv);
@@ -463,7 +463,8 @@ namespace
           }
         const double drift = std::abs(metrics.at("volume_change").back());
         table.add({double(level), h, double(summary.steps),
-                   double(summary.max_dofs), summary.wall_time, mean_its,
+                   double(summary.max_dofs), summary.wall_time,
+                   summary.cpu_time, mean_its,
                    max_its, max_error, final_error, drift});
         finest_neck_error = max_error;
         finest_area_drift = drift;
