@@ -4,12 +4,14 @@
 //   levelsinter_viscous_validation bubble SCENE.prm LEVELS FORMS [options]
 //   levelsinter_viscous_validation hopper SCENE.prm LEVELS [options]
 //   levelsinter_viscous_validation pore SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation coalescence SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C,
-// --max-neck-error, --max-area-drift, --max-pore-area-ratio); the pore case
+// --max-neck-error, --max-area-drift, --max-pore-area-ratio,
+// --max-roundness-error); the pore case
 // needs --pore-half-width W (a square window of half-width W around the
 // particles' centroid that holds the pore and solid only). Exit code 0 only
 // if every check passes.
@@ -557,6 +559,54 @@ namespace
           "max-pore-area-ratio");
     check("finest solid-area drift", final_drift, options, "max-area-drift");
   }
+
+  // Particles of any sizes that merge into one: at the end, the interface
+  // length against that of the circle with the same area (the shape the
+  // pair relaxes to; a half circle per symmetry plane), and the area drift.
+  void
+  coalescence(const std::string               &scene_file,
+              const std::vector<unsigned int> &levels,
+              const Options                   &options)
+  {
+    constexpr int dim = 2;
+    Table table({"level", "steps", "max_dofs", "cpu_time", "mean_stokes_its",
+                 "final_time", "roundness_error", "area_drift"},
+                options.csv);
+    double roundness = 0, drift = 0;
+    for (const unsigned int level : levels)
+      {
+        const std::string directory =
+          output_directory("coalescence_level" + std::to_string(level));
+        auto overrides = options.overrides;
+        overrides.insert(overrides.end(),
+                         {{"Mesh refinement/Maximum level", std::to_string(level)},
+                          {"Output/Directory", directory},
+                          {"Output/Field formats", "none"}});
+        const auto      scene = read_scene(scene_file, overrides);
+        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        const auto summary = simulation.run();
+        const auto measures =
+          interface_measures::volume_and_area(simulation.level_set());
+        const double parts =
+          std::pow(2., scene.viscous_flow.symmetry_boundaries.size());
+        const double radius = std::sqrt(parts * measures.solid_volume / M_PI);
+        roundness =
+          measures.interface_area / (2 * M_PI * radius / parts) - 1;
+        const auto metrics = read_metrics(directory + "/metrics.csv");
+        const auto &its     = metrics.at("stokes_iterations");
+        double      mean_its = 0;
+        for (const double i : its)
+          mean_its += i / its.size();
+        drift = std::abs(metrics.at("volume_change").back());
+        table.add({double(level), double(summary.steps),
+                   double(summary.max_dofs), summary.cpu_time, mean_its,
+                   summary.time, roundness, drift});
+      }
+    check("finest interface length / that of the round shape - 1", roundness,
+          options, "max-roundness-error");
+    check("finest solid-area drift", drift, options, "max-area-drift");
+  }
 } // namespace
 
 int
@@ -582,6 +632,8 @@ main(int argc, char **argv)
         hopper(args[1], levels, parse_options(args, 3));
       else if (args[0] == "pore")
         pore(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "coalescence")
+        coalescence(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")
         {
           // Print the reference for a check against the quoted values.
