@@ -3,13 +3,17 @@
 //
 //   levelsinter_viscous_validation bubble SCENE.prm LEVELS FORMS [options]
 //   levelsinter_viscous_validation hopper SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation spheres SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C,
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
-// --max-stokes-its). Exit code 0 only if every check
+// --max-stokes-its; spheres: --min-neck-growth, --max-volume-drift,
+// --min-early-slope, --max-early-slope, --max-final-radius-error) and
+// for both the band and filter thickness in cells (--band-cells,
+// --filter-cells). Exit code 0 only if every check
 // passes.
 
 #include <deal.II/base/mpi.h>
@@ -384,6 +388,104 @@ namespace
     return columns;
   }
 
+  // What the two-particle studies read from one run.
+  struct LevelRun
+  {
+    double                                     h = 0;
+    SceneParameters                            scene;
+    std::map<std::string, std::vector<double>> metrics;
+    unsigned int                               steps    = 0;
+    unsigned int                               max_dofs = 0;
+    double                                     wall_time = 0, cpu_time = 0;
+    // Per step: mean and largest FGMRES count, mean solve CPU time.
+    double mean_its = 0, max_its = 0, mean_solve_cpu = 0;
+  };
+
+  // Run the scene with the finest cells at @p level (h = box height /
+  // subdivisions / 2^level), band and filter thickness tied to h (options
+  // --band-cells, default 6, and --filter-cells, default 8);
+  // @p initialise(simulation, scene) may replace the initial level set.
+  template <int dim, typename Initialise>
+  LevelRun
+  run_level(const std::string  &scene_file,
+            const unsigned int  level,
+            const Options      &options,
+            const std::string  &name,
+            const Initialise   &initialise)
+  {
+    LevelRun     run;
+    const auto   base = read_scene(scene_file, options.overrides);
+    run.h = (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
+            base.domain.subdivisions[1] / std::pow(2., level);
+    const std::string directory =
+      output_directory(name + "_level" + std::to_string(level));
+    const auto cells = [&](const std::string &key, const double fallback) {
+      const auto it = options.limits.find(key);
+      return (it == options.limits.end() ? fallback : it->second) * run.h;
+    };
+    auto overrides = options.overrides;
+    overrides.insert(
+      overrides.end(),
+      {{"Mesh refinement/Maximum level", std::to_string(level)},
+       {"Mesh refinement/Band width", std::to_string(cells("band-cells", 6))},
+       {"Level set/Filter thickness",
+        std::to_string(cells("filter-cells", 8))},
+                      {"Output/Directory", directory},
+                      {"Output/Field formats", "none"}});
+    run.scene = read_scene(scene_file, overrides);
+
+    Simulation<dim> simulation(run.scene, MPI_COMM_WORLD, std::cout);
+    simulation.initialise();
+    initialise(simulation, run.scene);
+    const auto summary = simulation.run();
+    run.steps          = summary.steps;
+    run.max_dofs       = summary.max_dofs;
+    run.wall_time      = summary.wall_time;
+    run.cpu_time       = summary.cpu_time;
+
+    run.metrics           = read_metrics(directory + "/metrics.csv");
+    const auto &its       = run.metrics.at("stokes_iterations");
+    const auto &solve_cpu = run.metrics.at("stokes_solve_cpu");
+    for (unsigned int i = 0; i < its.size(); ++i)
+      {
+        run.mean_its += its[i] / its.size();
+        run.max_its = std::max(run.max_its, its[i]);
+        run.mean_solve_cpu += solve_cpu[i] / its.size();
+      }
+    return run;
+  }
+
+  // The neck history of one level as CSV next to the study's table.
+  std::ofstream
+  open_series(const Options     &options,
+              const unsigned int level,
+              const std::string &header)
+  {
+    std::ofstream series;
+    if (root && !options.csv.empty())
+      {
+        series.open(options.csv + ".level" + std::to_string(level) + ".csv");
+        series << header << '\n';
+      }
+    return series;
+  }
+
+  // Over all levels: the iteration count must not grow as h shrinks.
+  void
+  check_iterations(const std::vector<LevelRun> &runs, const Options &options)
+  {
+    double worst_mean = 0, worst_max = 0;
+    for (const auto &run : runs)
+      {
+        worst_mean = std::max(worst_mean, run.mean_its);
+        worst_max  = std::max(worst_max, run.max_its);
+      }
+    check("largest mean FGMRES iterations per step", worst_mean, options,
+          "max-mean-stokes-its");
+    check("largest FGMRES iterations in one step", worst_max, options,
+          "max-stokes-its");
+  }
+
   // Two cylinders from Hopper's shape at the scene's initial neck: neck
   // radius against the exact one, solid-area drift, Stokes iterations.
   void
@@ -394,94 +496,128 @@ namespace
     constexpr int dim = 2;
     Table table({"level", "h", "steps", "max_dofs", "wall_time", "cpu_time",
                  "solve_cpu_per_step", "mean_stokes_its", "max_stokes_its",
-                 "max_neck_error",
-                 "final_neck_error", "area_drift"},
+                 "max_neck_error", "final_neck_error", "area_drift"},
                 options.csv);
-    double finest_neck_error = 0, finest_area_drift = 0;
-    double worst_mean_its = 0, worst_max_its = 0;
+    std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
       {
-        const auto   base = read_scene(scene_file, options.overrides);
-        const double h =
-          (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
-          base.domain.subdivisions[1] / std::pow(2., level);
-        const std::string directory =
-          output_directory("hopper_level" + std::to_string(level));
-        auto overrides = options.overrides;
-        overrides.insert(overrides.end(),
-                         {{"Mesh refinement/Maximum level", std::to_string(level)},
-                          {"Mesh refinement/Band width", std::to_string(6 * h)},
-                          {"Level set/Filter thickness", std::to_string(8 * h)},
-                          {"Output/Directory", directory},
-                          {"Output/Field formats", "none"}});
-        const auto scene = read_scene(scene_file, overrides);
-        const auto &particles = scene.geometry.particles;
-        const double R        = particles[0][dim];
-        const double gamma    = scene.viscous_flow.surface_tension;
-        const double eta      = scene.viscous_flow.solid_viscosity;
-        // The scene's overlapping circles fix the initial neck y0; Hopper's
-        // shape with that neck replaces them.
-        const double c  = std::abs(particles[1][0] - particles[0][0]) / 2;
-        const double y0 = std::sqrt(R * R - c * c);
+        double     R = 0, tau0 = 0;
+        const auto run = run_level<dim>(
+          scene_file,
+          level,
+          options,
+          "hopper",
+          [&](Simulation<dim> &sim, const SceneParameters &scene) {
+            // The scene's overlapping circles fix the initial neck y0;
+            // Hopper's shape with that neck replaces them.
+            const auto  &particles = scene.geometry.particles;
+            R                      = particles[0][dim];
+            const double c = std::abs(particles[1][0] - particles[0][0]) / 2;
+            const Hopper exact(R);
+            const double m0 = exact.m_of_neck(std::sqrt(R * R - c * c));
+            tau0            = exact.time(m0);
+            sim.set_level_set(HopperLevelSet(exact, m0, sim.filter()));
+          });
+        runs.push_back(run);
         const Hopper exact(R);
-        const double m0  = exact.m_of_neck(y0);
-        const double tau0 = exact.time(m0);
-
-        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
-        simulation.initialise();
-        simulation.set_level_set(HopperLevelSet(exact, m0, simulation.filter()));
-        const auto summary = simulation.run();
-
-        const auto   metrics = read_metrics(directory + "/metrics.csv");
-        double       max_error = 0, final_error = 0;
-        const auto  &t    = metrics.at("time");
-        const auto  &neck = metrics.at("neck_radius");
-        std::ofstream series;
-        if (root && !options.csv.empty())
-          {
-            // The neck history behind the table, one file per level.
-            series.open(options.csv + ".level" + std::to_string(level) +
-                        ".csv");
-            series << "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R\n";
-          }
+        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double eta   = run.scene.viscous_flow.solid_viscosity;
+        const auto  &t     = run.metrics.at("time");
+        const auto  &neck  = run.metrics.at("neck_radius");
+        auto         series = open_series(
+          options, level, "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R");
+        double max_error = 0, final_error = 0;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
-            const double tau = tau0 + t[i] * gamma / (eta * R);
+            const double tau     = tau0 + t[i] * gamma / (eta * R);
             const double y_exact = exact.neck(exact.m_of_time(tau));
-            final_error = std::abs(neck[i] - y_exact) / y_exact;
-            max_error   = std::max(max_error, final_error);
+            final_error          = std::abs(neck[i] - y_exact) / y_exact;
+            max_error            = std::max(max_error, final_error);
             if (series.is_open())
               series << tau << ',' << neck[i] / R << ',' << y_exact / R
                      << '\n';
           }
-        const auto &its       = metrics.at("stokes_iterations");
-        const auto &solve_cpu = metrics.at("stokes_solve_cpu");
-        double      mean_its = 0, max_its = 0, mean_solve_cpu = 0;
-        for (unsigned int i = 0; i < its.size(); ++i)
-          {
-            mean_its += its[i] / its.size();
-            max_its = std::max(max_its, its[i]);
-            mean_solve_cpu += solve_cpu[i] / its.size();
-          }
-        const double drift = std::abs(metrics.at("volume_change").back());
-        table.add({double(level), h, double(summary.steps),
-                   double(summary.max_dofs), summary.wall_time,
-                   summary.cpu_time, mean_solve_cpu, mean_its,
-                   max_its, max_error, final_error, drift});
-        finest_neck_error = max_error;
-        finest_area_drift = drift;
-        worst_mean_its    = std::max(worst_mean_its, mean_its);
-        worst_max_its     = std::max(worst_max_its, max_its);
+        table.add({double(level), run.h, double(run.steps),
+                   double(run.max_dofs), run.wall_time, run.cpu_time,
+                   run.mean_solve_cpu, run.mean_its, run.max_its, max_error,
+                   final_error,
+                   std::abs(run.metrics.at("volume_change").back())});
       }
-    check("finest max relative neck-radius error", finest_neck_error, options,
-          "max-neck-error");
-    check("finest solid-area drift", finest_area_drift, options,
+    check("finest max relative neck-radius error", table.finest("max_neck_error"),
+          options, "max-neck-error");
+    check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
-    // Over all levels: the iteration count must not grow as h shrinks.
-    check("largest mean FGMRES iterations per step", worst_mean_its, options,
-          "max-mean-stokes-its");
-    check("largest FGMRES iterations in one step", worst_max_its, options,
-          "max-stokes-its");
+    check_iterations(runs, options);
+  }
+
+  // Two equal spheres of radius a from the scene's overlapping pair: neck
+  // radius x against Frenkel-Eshelby's early law x/a = (3 gamma t' /
+  // (2 eta a))^(1/2), t' counted from touching (the scene's initial neck x0
+  // is reached at t'0 = 2 eta a x0^2 / (3 gamma a^2)); the coalesced sphere
+  // has radius 2^(1/3) a, which the neck becomes at the end.
+  void
+  spheres(const std::string              &scene_file,
+          const std::vector<unsigned int> &levels,
+          const Options                   &options)
+  {
+    constexpr int dim = 3;
+    Table table({"level", "h", "steps", "max_dofs", "wall_time", "cpu_time",
+                 "solve_cpu_per_step", "mean_stokes_its", "max_stokes_its",
+                 "neck_growth", "early_slope", "final_neck_over_a",
+                 "final_radius_error", "volume_drift"},
+                options.csv);
+    std::vector<LevelRun> runs;
+    for (const unsigned int level : levels)
+      {
+        const auto run =
+          run_level<dim>(scene_file, level, options, "spheres", [](auto &, auto &) {});
+        runs.push_back(run);
+        const double a     = run.scene.geometry.particles[0][dim];
+        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double eta   = run.scene.viscous_flow.solid_viscosity;
+        const auto  &t     = run.metrics.at("time");
+        const auto  &neck  = run.metrics.at("neck_radius");
+        const double t0 = 2 * eta * std::pow(neck[0] / a, 2) * a / (3 * gamma);
+        auto         series = open_series(
+          options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
+        // Least-squares slope of log x against log t' while x < 0.3 a,
+        // where the law applies.
+        double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+        for (unsigned int i = 0; i < t.size(); ++i)
+          {
+            const double t_touch = t0 + t[i];
+            const double x       = neck[i] / a;
+            if (series.is_open())
+              series << t_touch * gamma / (eta * a) << ',' << x << ','
+                     << std::sqrt(1.5 * gamma * t_touch / (eta * a)) << '\n';
+            if (x < 0.3)
+              {
+                const double lx = std::log(t_touch), ly = std::log(x);
+                sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, n += 1;
+              }
+          }
+        const double slope = n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) :
+                                     std::numeric_limits<double>::quiet_NaN();
+        const double final_x = neck.back() / a;
+        table.add({double(level), run.h, double(run.steps),
+                   double(run.max_dofs), run.wall_time, run.cpu_time,
+                   run.mean_solve_cpu, run.mean_its, run.max_its,
+                   neck.back() / neck[0], slope, final_x,
+                   std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
+                   std::abs(run.metrics.at("volume_change").back())});
+      }
+    check("finest neck growth x_end / x_0", table.finest("neck_growth"),
+          options, "min-neck-growth", false);
+    check("finest solid-volume drift", table.finest("volume_drift"), options,
+          "max-volume-drift");
+    check("finest early log-log slope (>=)", table.finest("early_slope"),
+          options, "min-early-slope", false);
+    check("finest early log-log slope (<=)", table.finest("early_slope"),
+          options, "max-early-slope");
+    check("finest final radius error against 2^(1/3) a",
+          table.finest("final_radius_error"), options,
+          "max-final-radius-error");
+    check_iterations(runs, options);
   }
 } // namespace
 
@@ -506,6 +642,8 @@ main(int argc, char **argv)
                parse_options(args, 4));
       else if (args[0] == "hopper")
         hopper(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "spheres")
+        spheres(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")
         {
           // Print the reference for a check against the quoted values.
