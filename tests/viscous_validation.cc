@@ -455,6 +455,42 @@ namespace
     return run;
   }
 
+  // Table columns of every two-particle study, then the study's own.
+  std::vector<std::string>
+  run_columns(const std::vector<std::string> &specific)
+  {
+    std::vector<std::string> columns = {"level",
+                                        "h",
+                                        "steps",
+                                        "max_dofs",
+                                        "wall_time",
+                                        "cpu_time",
+                                        "solve_cpu_per_step",
+                                        "mean_stokes_its",
+                                        "max_stokes_its"};
+    columns.insert(columns.end(), specific.begin(), specific.end());
+    return columns;
+  }
+
+  // The values of run_columns() for one run.
+  std::vector<double>
+  run_row(const unsigned int          level,
+          const LevelRun             &run,
+          const std::vector<double> &specific)
+  {
+    std::vector<double> row = {double(level),
+                               run.h,
+                               double(run.steps),
+                               double(run.max_dofs),
+                               run.wall_time,
+                               run.cpu_time,
+                               run.mean_solve_cpu,
+                               run.mean_its,
+                               run.max_its};
+    row.insert(row.end(), specific.begin(), specific.end());
+    return row;
+  }
+
   // The neck history of one level as CSV next to the study's table.
   std::ofstream
   open_series(const Options     &options,
@@ -494,9 +530,7 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table({"level", "h", "steps", "max_dofs", "wall_time", "cpu_time",
-                 "solve_cpu_per_step", "mean_stokes_its", "max_stokes_its",
-                 "max_neck_error", "final_neck_error", "area_drift"},
+    Table table(run_columns({"max_neck_error", "final_neck_error", "area_drift"}),
                 options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
@@ -537,11 +571,11 @@ namespace
               series << tau << ',' << neck[i] / R << ',' << y_exact / R
                      << '\n';
           }
-        table.add({double(level), run.h, double(run.steps),
-                   double(run.max_dofs), run.wall_time, run.cpu_time,
-                   run.mean_solve_cpu, run.mean_its, run.max_its, max_error,
-                   final_error,
-                   std::abs(run.metrics.at("volume_change").back())});
+        table.add(run_row(level,
+                          run,
+                          {max_error,
+                           final_error,
+                           std::abs(run.metrics.at("volume_change").back())}));
       }
     check("finest max relative neck-radius error", table.finest("max_neck_error"),
           options, "max-neck-error");
@@ -561,10 +595,8 @@ namespace
           const Options                   &options)
   {
     constexpr int dim = 3;
-    Table table({"level", "h", "steps", "max_dofs", "wall_time", "cpu_time",
-                 "solve_cpu_per_step", "mean_stokes_its", "max_stokes_its",
-                 "neck_growth", "early_slope", "final_neck_over_a",
-                 "final_radius_error", "volume_drift"},
+    Table table(run_columns({"neck_growth", "early_slope", "final_neck_over_a",
+                             "final_radius_error", "volume_drift"}),
                 options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
@@ -599,12 +631,13 @@ namespace
         const double slope = n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) :
                                      std::numeric_limits<double>::quiet_NaN();
         const double final_x = neck.back() / a;
-        table.add({double(level), run.h, double(run.steps),
-                   double(run.max_dofs), run.wall_time, run.cpu_time,
-                   run.mean_solve_cpu, run.mean_its, run.max_its,
-                   neck.back() / neck[0], slope, final_x,
-                   std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
-                   std::abs(run.metrics.at("volume_change").back())});
+        table.add(run_row(level,
+                          run,
+                          {neck.back() / neck[0],
+                           slope,
+                           final_x,
+                           std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
+                           std::abs(run.metrics.at("volume_change").back())}));
       }
     check("finest neck growth x_end / x_0", table.finest("neck_growth"),
           options, "min-neck-growth", false);
