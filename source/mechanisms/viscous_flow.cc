@@ -1,8 +1,11 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/grid/grid_tools.h>
 
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
+#include <ctime>
 #include <limits>
 
 namespace levelsinter
@@ -55,7 +58,11 @@ namespace levelsinter
     }
     {
       TimerOutput::Scope scope(timer, "viscous flow: solve");
-      last_iterations = operator_->solve();
+      const std::clock_t start = std::clock();
+      last_iterations          = operator_->solve();
+      last_solve_cpu           = Utilities::MPI::sum(
+        double(std::clock() - start) / CLOCKS_PER_SEC,
+        alpha.dof_handler().get_communicator());
     }
 
     // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by
