@@ -5,9 +5,10 @@
 //   levelsinter_viscous_validation hopper SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
-// bubble); FORMS: comma-separated surface-tension forms (csf, sharp).
+// bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
+// csf-curvature, csf-curvature-exact).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
-// --max-core-error, --max-C,
+// --max-core-error, --max-C, --max-curvature-error,
 // --max-neck-error, --max-area-drift). Exit code 0 only if every check
 // passes.
 
@@ -33,6 +34,7 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -143,7 +145,53 @@ namespace
     return {{sums[0] / sums[1], sums[2] / sums[3]}};
   }
 
+  // Relative error of the nodal curvature against @p exact at the points
+  // of the sharp surface quadrature on {alpha_h = 0}: {rms, max}.
+  template <int dim>
+  std::array<double, 2>
+  curvature_errors(const LevelSetField<dim>            &alpha,
+                   const TrilinosWrappers::MPI::Vector &kappa,
+                   const double                         exact)
+  {
+    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
+                                                alpha.alpha());
+    classifier.reclassify();
+    NonMatching::RegionUpdateFlags flags;
+    flags.surface = update_values | update_JxW_values;
+    const hp::FECollection<dim> fe_collection(alpha.fe());
+    NonMatching::FEValues<dim>  values(fe_collection,
+                                      QGauss<1>(3),
+                                      flags,
+                                      classifier,
+                                      alpha.dof_handler(),
+                                      alpha.alpha());
+    std::array<double, 3> sums{{0, 0, 0}}; // int e^2, length, max |e|
+    std::vector<double>   k;
+    for (const auto &cell : alpha.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          if (const auto &surface = values.get_surface_fe_values())
+            {
+              k.resize(surface->n_quadrature_points);
+              surface->get_function_values(kappa, k);
+              for (const unsigned int q : surface->quadrature_point_indices())
+                {
+                  const double e = (k[q] - exact) / exact;
+                  sums[0] += e * e * surface->JxW(q);
+                  sums[1] += surface->JxW(q);
+                  sums[2] = std::max(sums[2], std::abs(e));
+                }
+            }
+        }
+    return {{std::sqrt(Utilities::MPI::sum(sums[0], MPI_COMM_WORLD) /
+                       Utilities::MPI::sum(sums[1], MPI_COMM_WORLD)),
+             Utilities::MPI::max(sums[2], MPI_COMM_WORLD)}};
+  }
+
   // Static bubble: one Stokes solve on a uniform mesh; p_in = gamma / R.
+  // FORMS are the scene's surface-tension forms plus csf-curvature-exact,
+  // the csf-curvature form with the curvature prescribed as 1/R.
   void
   bubble(const std::string              &scene_file,
          const std::vector<unsigned int> &levels,
@@ -151,13 +199,23 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table({"level", "h", "form", "dofs", "iterations", "solve_time",
-                 "p_in", "p_out", "pressure_error", "core_error", "C"},
+    const std::vector<std::string> form_ids = {"csf",
+                                               "sharp",
+                                               "csf-curvature",
+                                               "csf-curvature-exact"};
+    Table table({"level", "h", "form", "dofs", "iterations", "cpu_time",
+                 "p_in", "p_out", "pressure_error", "core_error", "C",
+                 "kappa_rms_error", "kappa_max_error"},
                 options.csv);
-    double worst_error = 0, worst_C = 0, worst_core = 0;
+    double worst_error = 0, worst_C = 0, worst_core = 0, worst_kappa = 0;
     for (const auto &form : forms)
       for (const unsigned int level : levels)
         {
+          const auto id = std::find(form_ids.begin(), form_ids.end(), form) -
+                          form_ids.begin();
+          if (id == int(form_ids.size()))
+            throw std::runtime_error("unknown surface-tension form " + form);
+          const bool exact_curvature = form == "csf-curvature-exact";
           const auto base = read_scene(scene_file, options.overrides);
           const double L =
             base.domain.upper_corner[0] - base.domain.lower_corner[0];
@@ -174,27 +232,31 @@ namespace
              {"Level set/Filter thickness", std::to_string(band)},
              {"Mesh refinement/Band width", std::to_string(band)},
              {"Time/CFL number", "0.1"},
-             {"Viscous flow/Surface tension form", form},
+             {"Viscous flow/Surface tension form",
+              exact_curvature ? "csf-curvature" : form},
              {"Output/Directory", output_directory("bubble")},
              {"Output/Field formats", "none"}});
           const auto      scene = read_scene(scene_file, overrides);
           Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
           simulation.initialise();
-          const auto &alpha = simulation.level_set();
+          const auto  &alpha = simulation.level_set();
+          const double R     = scene.geometry.particles[0][dim];
 
-          ViscousFlow<dim>   flow(scene.viscous_flow, simulation.timer());
+          ViscousFlow<dim>   flow(scene.viscous_flow,
+                                simulation.filter(),
+                                simulation.timer());
           VelocityField<dim> velocity(simulation.triangulation());
           velocity.setup_dofs();
           velocity.set_zero();
+          if (exact_curvature)
+            flow.prescribe_curvature(
+              std::make_shared<Functions::ConstantFunction<dim>>(1 / R));
           flow.setup(alpha);
-          const auto start = std::chrono::steady_clock::now();
+          const std::clock_t start = std::clock();
           flow.add_velocity(alpha, 0, 0, velocity);
-          const double solve_time =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                          start)
-              .count();
+          const double cpu_time = Utilities::MPI::sum(
+            double(std::clock() - start) / CLOCKS_PER_SEC, MPI_COMM_WORLD);
           const auto   p     = mean_pressures(flow.stokes(), alpha);
-          const double R     = scene.geometry.particles[0][dim];
           const double gamma = scene.viscous_flow.surface_tension;
           const double eta   = scene.viscous_flow.solid_viscosity;
           const double p_exact = gamma / R;
@@ -206,27 +268,36 @@ namespace
           const auto   core = core_pressures(flow.stokes(), centre, R);
           const double core_error =
             std::abs(core[0] - core[1] - p_exact) / p_exact;
-          table.add({double(level), h, form == "csf" ? 0. : 1.,
+          const auto kappa_error =
+            flow.curvature().size() > 0 ?
+              curvature_errors(alpha, flow.curvature(), 1 / R) :
+              std::array<double, 2>{{0., 0.}};
+          table.add({double(level), h, double(id),
                      double(flow.stokes().dof_handler().n_dofs()),
-                     flow.metric_values()[0], solve_time, p[0], p[1], error,
-                     core_error, C});
+                     flow.metric_values()[0], cpu_time, p[0], p[1], error,
+                     core_error, C, kappa_error[0], kappa_error[1]});
           if (level == levels.back())
             {
               worst_error = std::max(worst_error, error);
               worst_C     = std::max(worst_C, C);
               worst_core  = std::max(worst_core, core_error);
+              worst_kappa = std::max(worst_kappa, kappa_error[1]);
             }
         }
     if (root)
-      std::cout << "(form: 0 = csf, 1 = sharp; pressure_error = |p_in - p_out "
-                   "- gamma/R| / (gamma/R); core_error: the same with the "
-                   "means over r < R/2 and r > 3R/2)\n";
+      std::cout << "(form: 0 = csf, 1 = sharp, 2 = csf-curvature, 3 = "
+                   "csf-curvature with kappa = 1/R; pressure_error = |p_in - "
+                   "p_out - gamma/R| / (gamma/R); core_error: the same with "
+                   "the means over r < R/2 and r > 3R/2; kappa errors "
+                   "relative, on alpha_h = 0, csf-curvature only)\n";
     check("finest relative mean-pressure error (worst form)", worst_error,
           options, "max-pressure-error");
     check("finest C = v_max eta / gamma (worst form)", worst_C, options,
           "max-C");
     check("finest core pressure-jump error (worst form)", worst_core, options,
           "max-core-error");
+    check("finest max relative curvature error on the interface",
+          worst_kappa, options, "max-curvature-error");
   }
 
   // Hopper's exact coalescence of two equal cylinders of radius R (DESIGN.md
