@@ -48,6 +48,16 @@ namespace levelsinter
     double
     time_step_limit(const LevelSetField<dim> &alpha) const override;
 
+    /**
+     * Rejects a step that increases the interface measure by more than
+     * 0.1 %: without external pressure the Stokes flow only dissipates
+     * the surface energy gamma |Gamma|, so a growing interface is the
+     * explicit capillary instability (dt above the capillary limit), not
+     * physics.
+     */
+    void
+    check_step(const LevelSetField<dim> &alpha) override;
+
     std::vector<std::string>
     metric_names() const override
     {
@@ -99,6 +109,7 @@ namespace levelsinter
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;
     double                               h_min           = 0;
+    double                               area_at_step_start = 0;
     unsigned int                         last_iterations = 0;
   };
 } // namespace levelsinter
