@@ -63,6 +63,32 @@ namespace
     return dir;
   }
 
+  // NonMatching FEValues of @p fe for the regions of {alpha_h = 0} that
+  // @p flags asks for, 3 Gauss points per direction; owns the classifier
+  // the values read.
+  template <int dim>
+  struct CutCellValues
+  {
+    CutCellValues(const FiniteElement<dim>             &fe,
+                  const LevelSetField<dim>             &alpha,
+                  const NonMatching::RegionUpdateFlags &flags)
+      : classifier(alpha.dof_handler(), alpha.alpha())
+      , fe_collection(fe)
+      , values(fe_collection,
+               QGauss<1>(3),
+               flags,
+               classifier,
+               alpha.dof_handler(),
+               alpha.alpha())
+    {
+      classifier.reclassify();
+    }
+
+    NonMatching::MeshClassifier<dim> classifier;
+    const hp::FECollection<dim>      fe_collection;
+    NonMatching::FEValues<dim>       values;
+  };
+
   // Mean pressure over the discrete solid {alpha_h < 0} (cut-cell
   // quadrature) and over the pore, and their areas.
   template <int dim>
@@ -70,19 +96,11 @@ namespace
   mean_pressures(const TwoPhaseStokes<dim> &stokes,
                  const LevelSetField<dim>  &alpha)
   {
-    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
-                                                alpha.alpha());
-    classifier.reclassify();
     NonMatching::RegionUpdateFlags flags;
     flags.inside  = update_values | update_JxW_values;
     flags.outside = update_values | update_JxW_values;
-    const hp::FECollection<dim> fe_collection(stokes.fe());
-    NonMatching::FEValues<dim>  values(fe_collection,
-                                      QGauss<1>(3),
-                                      flags,
-                                      classifier,
-                                      alpha.dof_handler(),
-                                      alpha.alpha());
+    CutCellValues<dim> cut(stokes.fe(), alpha, flags);
+    auto              &values = cut.values;
     const FEValuesExtractors::Scalar pressure(dim);
     std::array<double, 4>            sums{{0, 0, 0, 0}};
     std::vector<double>              p;
@@ -155,18 +173,10 @@ namespace
                    const TrilinosWrappers::MPI::Vector &kappa,
                    const double                         exact)
   {
-    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
-                                                alpha.alpha());
-    classifier.reclassify();
     NonMatching::RegionUpdateFlags flags;
     flags.surface = update_values | update_JxW_values;
-    const hp::FECollection<dim> fe_collection(alpha.fe());
-    NonMatching::FEValues<dim>  values(fe_collection,
-                                      QGauss<1>(3),
-                                      flags,
-                                      classifier,
-                                      alpha.dof_handler(),
-                                      alpha.alpha());
+    CutCellValues<dim> cut(alpha.fe(), alpha, flags);
+    auto              &values = cut.values;
     std::array<double, 3> sums{{0, 0, 0}}; // int e^2, length, max |e|
     std::vector<double>   k;
     for (const auto &cell : alpha.dof_handler().active_cell_iterators())
