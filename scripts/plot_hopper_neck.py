@@ -1,6 +1,8 @@
-"""Neck half-width against time for the Hopper study (viscous_validation
-hopper ... --csv FILE writes FILE.levelN.csv): one curve per level and the
-exact solution. Usage: plot_hopper_neck.py OUT.png [LABEL=]FILE.level4.csv ...
+"""Neck against time for the two-particle viscous studies
+(viscous_validation hopper|spheres ... --csv FILE writes FILE.levelN.csv with
+the columns time, neck, reference): one curve per level and the reference
+(Hopper's exact solution, or Frenkel-Eshelby's early law for the spheres).
+Usage: plot_hopper_neck.py OUT.png [--loglog] [LABEL=]FILE.level4.csv ...
 (the label defaults to the level part of the file name)."""
 import csv
 import sys
@@ -10,18 +12,32 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
+LABELS = {
+    "t_gamma_over_eta_R": "t gamma / (eta R)",
+    "neck_over_R": "neck half-width / R",
+    "exact_neck_over_R": "Hopper (exact)",
+    "t_gamma_over_eta_a": "t gamma / (eta a), from touching",
+    "neck_over_a": "neck radius / a",
+    "frenkel_eshelby": "Frenkel-Eshelby (3 t gamma / (2 eta a))^1/2",
+}
+
+files = [a for a in sys.argv[2:] if a != "--loglog"]
 fig, ax = plt.subplots(figsize=(6, 4))
-for argument in sys.argv[2:]:
+for argument in files:
     label, _, name = argument.rpartition("=")
-    rows = list(csv.DictReader(open(name)))
-    t = [float(r["t_gamma_over_eta_R"]) for r in rows]
-    ax.plot(t, [float(r["neck_over_R"]) for r in rows], "o-", markersize=3,
-            label=label or name.rsplit(".", 2)[-2])
-    exact = [float(r["exact_neck_over_R"]) for r in rows]
-ax.plot(t, exact, "k--", label="Hopper (exact)")
-ax.set_xlabel("t gamma / (eta R)")
-ax.set_ylabel("neck half-width / R")
+    reader = csv.reader(open(name))
+    columns = next(reader)
+    rows = [[float(v) for v in r] for r in reader]
+    t = [r[0] for r in rows]
+    ax.plot(t, [r[1] for r in rows], label=label or name.rsplit(".", 2)[-2])
+    reference = [r[2] for r in rows]
+ax.plot(t, reference, "k--", label=LABELS[columns[2]])
+if "--loglog" in sys.argv:
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+ax.set_xlabel(LABELS[columns[0]])
+ax.set_ylabel(LABELS[columns[1]])
 ax.legend()
-ax.grid(alpha=0.3)
+ax.grid(alpha=0.3, which="both")
 fig.tight_layout()
 fig.savefig(sys.argv[1], dpi=110)

@@ -3,14 +3,26 @@
 //
 //   levelsinter_viscous_validation bubble SCENE.prm LEVELS FORMS [options]
 //   levelsinter_viscous_validation hopper SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation spheres SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation pore SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation coalescence SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
 // csf-curvature, csf-curvature-exact).
-// Options: --csv FILE, --set ENTRY=VALUE, for hopper --dt-factor F (fixed
-// dt = F eta_s h / gamma, no CFL or capillary limit) and limits
-// (--max-pressure-error, --max-core-error, --max-C, --max-curvature-error,
-// --max-neck-error, --max-area-drift, --max-rejected, --min-rejected).
+// Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
+// --max-core-error, --max-C, --max-curvature-error,
+// --max-neck-error, --max-area-drift, --max-mean-stokes-its,
+// --max-stokes-its, hopper: --max-rejected, --min-rejected; spheres:
+// --min-neck-growth, --max-volume-drift,
+// --min-early-slope, --max-early-slope, --max-final-radius-error; pore:
+// --pore-half-width W (required: a square window of half-width W around
+// the particles' centroid that holds the pore and solid only),
+// --max-pore-area-ratio, --max-area-drift; coalescence:
+// --max-roundness-error, --max-area-drift) and for all but the bubble the
+// band and filter thickness in cells (--band-cells, --filter-cells) and a
+// fixed step --dt-factor F (dt = F eta_s h / gamma, no CFL or capillary
+// limit).
 // Exit code 0 only if every check passes.
 
 #include <deal.II/base/mpi.h>
@@ -466,6 +478,162 @@ namespace
     return columns;
   }
 
+  // What the two-particle studies read from one run.
+  struct LevelRun
+  {
+    double                                     h = 0;
+    SceneParameters                            scene;
+    std::map<std::string, std::vector<double>> metrics;
+    unsigned int                               steps    = 0;
+    unsigned int                               max_dofs = 0;
+    double                                     wall_time = 0, cpu_time = 0;
+    double       mean_dt        = 0;
+    unsigned int rejected_steps = 0; // retried with a smaller dt
+    // Per step: mean and largest FGMRES count, mean solve CPU time.
+    double mean_its = 0, max_its = 0, mean_solve_cpu = 0;
+  };
+
+  // Run the scene with the finest cells at @p level (h = box height /
+  // subdivisions / 2^level), band and filter thickness tied to h (options
+  // --band-cells, default 6, and --filter-cells, default band + 2);
+  // --dt-factor F fixes dt = F eta_s h / gamma (F times the explicit
+  // capillary limit at factor 1) with no CFL or capillary limit: the
+  // interface then moves up to ~F cells a step, so the default band is
+  // max(6, F + 2) cells and the mesh is adapted every step.
+  // @p initialise(simulation, scene) may replace the initial level set.
+  template <int dim, typename Initialise>
+  LevelRun
+  run_level(const std::string  &scene_file,
+            const unsigned int  level,
+            const Options      &options,
+            const std::string  &name,
+            const Initialise   &initialise)
+  {
+    LevelRun     run;
+    const auto   base = read_scene(scene_file, options.overrides);
+    run.h = (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
+            base.domain.subdivisions[1] / std::pow(2., level);
+    const std::string directory =
+      output_directory(name + "_level" + std::to_string(level));
+    const auto option = [&](const std::string &key, const double fallback) {
+      const auto it = options.limits.find(key);
+      return it == options.limits.end() ? fallback : it->second;
+    };
+    const double dt_factor  = option("dt-factor", 0);
+    const double band_cells = option("band-cells", std::max(6., dt_factor + 2));
+    auto         overrides  = options.overrides;
+    overrides.insert(
+      overrides.end(),
+      {{"Mesh refinement/Maximum level", std::to_string(level)},
+       {"Mesh refinement/Band width", std::to_string(band_cells * run.h)},
+       {"Level set/Filter thickness",
+        std::to_string(option("filter-cells", band_cells + 2) * run.h)},
+       {"Output/Directory", directory},
+       {"Output/Field formats", "none"}});
+    if (dt_factor > 0)
+      {
+        const auto viscous = read_scene(scene_file, overrides).viscous_flow;
+        overrides.insert(
+          overrides.end(),
+          {{"Time/Time step",
+            std::to_string(dt_factor * viscous.solid_viscosity * run.h /
+                           viscous.surface_tension)},
+           {"Time/CFL number", "0"},
+           {"Viscous flow/Capillary time step factor", "0"},
+           {"Mesh refinement/Adapt interval", "1"}});
+      }
+    run.scene = read_scene(scene_file, overrides);
+
+    Simulation<dim> simulation(run.scene, MPI_COMM_WORLD, std::cout);
+    simulation.initialise();
+    initialise(simulation, run.scene);
+    const auto summary = simulation.run();
+    run.steps          = summary.steps;
+    run.max_dofs       = summary.max_dofs;
+    run.wall_time      = summary.wall_time;
+    run.cpu_time       = summary.cpu_time;
+    run.mean_dt        = summary.time / summary.steps;
+    run.rejected_steps = summary.rejected_steps;
+
+    run.metrics           = read_metrics(directory + "/metrics.csv");
+    const auto &its       = run.metrics.at("stokes_iterations");
+    const auto &solve_cpu = run.metrics.at("stokes_solve_cpu");
+    for (unsigned int i = 0; i < its.size(); ++i)
+      {
+        run.mean_its += its[i] / its.size();
+        run.max_its = std::max(run.max_its, its[i]);
+        run.mean_solve_cpu += solve_cpu[i] / its.size();
+      }
+    return run;
+  }
+
+  // Table columns of every two-particle study, then the study's own.
+  std::vector<std::string>
+  run_columns(const std::vector<std::string> &specific)
+  {
+    std::vector<std::string> columns = {"level",
+                                        "h",
+                                        "steps",
+                                        "max_dofs",
+                                        "wall_time",
+                                        "cpu_time",
+                                        "solve_cpu_per_step",
+                                        "mean_stokes_its",
+                                        "max_stokes_its"};
+    columns.insert(columns.end(), specific.begin(), specific.end());
+    return columns;
+  }
+
+  // The values of run_columns() for one run.
+  std::vector<double>
+  run_row(const unsigned int          level,
+          const LevelRun             &run,
+          const std::vector<double> &specific)
+  {
+    std::vector<double> row = {double(level),
+                               run.h,
+                               double(run.steps),
+                               double(run.max_dofs),
+                               run.wall_time,
+                               run.cpu_time,
+                               run.mean_solve_cpu,
+                               run.mean_its,
+                               run.max_its};
+    row.insert(row.end(), specific.begin(), specific.end());
+    return row;
+  }
+
+  // The neck history of one level as CSV next to the study's table.
+  std::ofstream
+  open_series(const Options     &options,
+              const unsigned int level,
+              const std::string &header)
+  {
+    std::ofstream series;
+    if (root && !options.csv.empty())
+      {
+        series.open(options.csv + ".level" + std::to_string(level) + ".csv");
+        series << header << '\n';
+      }
+    return series;
+  }
+
+  // Over all levels: the iteration count must not grow as h shrinks.
+  void
+  check_iterations(const std::vector<LevelRun> &runs, const Options &options)
+  {
+    double worst_mean = 0, worst_max = 0;
+    for (const auto &run : runs)
+      {
+        worst_mean = std::max(worst_mean, run.mean_its);
+        worst_max  = std::max(worst_max, run.max_its);
+      }
+    check("largest mean FGMRES iterations per step", worst_mean, options,
+          "max-mean-stokes-its");
+    check("largest FGMRES iterations in one step", worst_max, options,
+          "max-stokes-its");
+  }
+
   // Two cylinders from Hopper's shape at the scene's initial neck: neck
   // radius against the exact one, solid-area drift, Stokes iterations.
   void
@@ -474,125 +642,237 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table({"level", "h", "dt", "steps", "rejected", "max_dofs",
-                 "cpu_time",
-                 "mean_stokes_its", "max_stokes_its", "max_neck_error",
-                 "final_neck_error", "area_drift"},
+    Table table(run_columns({"mean_dt", "rejected", "max_neck_error",
+                             "final_neck_error", "area_drift"}),
                 options.csv);
-    double finest_neck_error = 0, finest_area_drift = 0, finest_rejected = 0;
+    std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
       {
-        const auto   base = read_scene(scene_file, options.overrides);
-        const double h =
-          (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
-          base.domain.subdivisions[1] / std::pow(2., level);
-        const std::string directory =
-          output_directory("hopper_level" + std::to_string(level));
-        // --dt-factor F: fixed dt = F eta_s h / gamma (F times the explicit
-        // capillary limit at factor 1), no CFL or capillary limit; the
-        // interface then moves up to ~F cells a step, so the refined band
-        // is widened to cover it and the mesh adapted every step.
-        const auto   fixed = options.limits.find("dt-factor");
-        const double dt_factor =
-          fixed == options.limits.end() ? 0. : fixed->second;
-        const double band_cells = std::max(6., dt_factor + 2);
-        auto         overrides  = options.overrides;
-        overrides.insert(
-          overrides.end(),
-          {{"Mesh refinement/Maximum level", std::to_string(level)},
-           {"Mesh refinement/Band width", std::to_string(band_cells * h)},
-           {"Level set/Filter thickness", std::to_string((band_cells + 2) * h)},
-           {"Output/Directory", directory},
-           {"Output/Field formats", "none"}});
-        if (dt_factor > 0)
-          {
-            const auto viscous = read_scene(scene_file, overrides).viscous_flow;
-            overrides.insert(
-              overrides.end(),
-              {{"Time/Time step",
-                std::to_string(dt_factor * viscous.solid_viscosity * h /
-                               viscous.surface_tension)},
-               {"Time/CFL number", "0"},
-               {"Viscous flow/Capillary time step factor", "0"},
-               {"Mesh refinement/Adapt interval", "1"}});
-          }
-        const auto scene = read_scene(scene_file, overrides);
-        const auto &particles = scene.geometry.particles;
-        const double R        = particles[0][dim];
-        const double gamma    = scene.viscous_flow.surface_tension;
-        const double eta      = scene.viscous_flow.solid_viscosity;
-        // The scene's overlapping circles fix the initial neck y0; Hopper's
-        // shape with that neck replaces them.
-        const double c  = std::abs(particles[1][0] - particles[0][0]) / 2;
-        const double y0 = std::sqrt(R * R - c * c);
+        double     R = 0, tau0 = 0;
+        const auto run = run_level<dim>(
+          scene_file,
+          level,
+          options,
+          "hopper",
+          [&](Simulation<dim> &sim, const SceneParameters &scene) {
+            // The scene's overlapping circles fix the initial neck y0;
+            // Hopper's shape with that neck replaces them.
+            const auto  &particles = scene.geometry.particles;
+            R                      = particles[0][dim];
+            const double c = std::abs(particles[1][0] - particles[0][0]) / 2;
+            const Hopper exact(R);
+            const double m0 = exact.m_of_neck(std::sqrt(R * R - c * c));
+            tau0            = exact.time(m0);
+            sim.set_level_set(HopperLevelSet(exact, m0, sim.filter()));
+          });
+        runs.push_back(run);
         const Hopper exact(R);
-        const double m0  = exact.m_of_neck(y0);
-        const double tau0 = exact.time(m0);
-
-        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
-        simulation.initialise();
-        simulation.set_level_set(HopperLevelSet(exact, m0, simulation.filter()));
-        typename Simulation<dim>::Summary summary;
-        try
-          {
-            summary = simulation.run();
-          }
-        catch (const std::exception &stop)
-          {
-            // A run the step rejection had to stop (e.g. an unstable
-            // explicit step) is a result of the study: report it and go
-            // on; its NaN row fails any check on this level.
-            if (root)
-              std::cout << "level " << level
-                        << ": the run stopped: " << stop.what() << "\n";
-            const double nan = std::numeric_limits<double>::quiet_NaN();
-            table.add({double(level), h, scene.time.time_step, nan, nan, nan,
-                       nan, nan, nan, nan, nan, nan});
-            finest_neck_error = finest_area_drift = finest_rejected = nan;
-            continue;
-          }
-
-        const auto   metrics = read_metrics(directory + "/metrics.csv");
-        double       max_error = 0, final_error = 0;
-        const auto  &t    = metrics.at("time");
-        const auto  &neck = metrics.at("neck_radius");
-        std::ofstream series;
-        if (root && !options.csv.empty())
-          {
-            // The neck history behind the table, one file per level.
-            series.open(options.csv + ".level" + std::to_string(level) +
-                        ".csv");
-            series << "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R\n";
-          }
+        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double eta   = run.scene.viscous_flow.solid_viscosity;
+        const auto  &t     = run.metrics.at("time");
+        const auto  &neck  = run.metrics.at("neck_radius");
+        auto         series = open_series(
+          options, level, "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R");
+        double max_error = 0, final_error = 0;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
-            const double tau = tau0 + t[i] * gamma / (eta * R);
+            const double tau     = tau0 + t[i] * gamma / (eta * R);
             const double y_exact = exact.neck(exact.m_of_time(tau));
-            final_error = std::abs(neck[i] - y_exact) / y_exact;
-            max_error   = std::max(max_error, final_error);
+            final_error          = std::abs(neck[i] - y_exact) / y_exact;
+            max_error            = std::max(max_error, final_error);
             if (series.is_open())
               series << tau << ',' << neck[i] / R << ',' << y_exact / R
                      << '\n';
           }
-        const auto &its = metrics.at("stokes_iterations");
-        double      mean_its = 0, max_its = 0;
-        for (const double i : its)
-          {
-            mean_its += i / its.size();
-            max_its = std::max(max_its, i);
-          }
-        const double drift = std::abs(metrics.at("volume_change").back());
-        table.add({double(level), h, summary.time / summary.steps,
-                   double(summary.steps), double(summary.rejected_steps),
-                   double(summary.max_dofs), summary.cpu_time, mean_its,
-                   max_its, max_error, final_error, drift});
-        finest_neck_error = max_error;
-        finest_area_drift = drift;
-        finest_rejected   = summary.rejected_steps;
+        table.add(run_row(level,
+                          run,
+                          {run.mean_dt,
+                           double(run.rejected_steps),
+                           max_error,
+                           final_error,
+                           std::abs(run.metrics.at("volume_change").back())}));
       }
-    check("finest max relative neck-radius error", finest_neck_error, options,
-          "max-neck-error");
-    check("finest solid-area drift", finest_area_drift, options,
+    check("finest max relative neck-radius error", table.finest("max_neck_error"),
+          options, "max-neck-error");
+    check("finest solid-area drift", table.finest("area_drift"), options,
+          "max-area-drift");
+    check("finest rejected steps", table.finest("rejected"), options,
+          "max-rejected");
+    check("finest rejected steps", table.finest("rejected"), options,
+          "min-rejected", false);
+    check_iterations(runs, options);
+  }
+
+  // Two equal spheres of radius a from the scene's overlapping pair: neck
+  // radius x against Frenkel-Eshelby's early law x/a = (3 gamma t' /
+  // (2 eta a))^(1/2), t' counted from touching (the scene's initial neck x0
+  // is reached at t'0 = 2 eta a x0^2 / (3 gamma a^2)); the coalesced sphere
+  // has radius 2^(1/3) a, which the neck becomes at the end.
+  void
+  spheres(const std::string              &scene_file,
+          const std::vector<unsigned int> &levels,
+          const Options                   &options)
+  {
+    constexpr int dim = 3;
+    Table table(run_columns({"neck_growth", "early_slope", "final_neck_over_a",
+                             "final_radius_error", "volume_drift"}),
+                options.csv);
+    std::vector<LevelRun> runs;
+    for (const unsigned int level : levels)
+      {
+        const auto run =
+          run_level<dim>(scene_file, level, options, "spheres", [](auto &, auto &) {});
+        runs.push_back(run);
+        const double a     = run.scene.geometry.particles[0][dim];
+        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double eta   = run.scene.viscous_flow.solid_viscosity;
+        const auto  &t     = run.metrics.at("time");
+        const auto  &neck  = run.metrics.at("neck_radius");
+        const double t0 = 2 * eta * std::pow(neck[0] / a, 2) * a / (3 * gamma);
+        auto         series = open_series(
+          options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
+        // Least-squares slope of log x against log t' while x < 0.3 a,
+        // where the law applies.
+        double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+        for (unsigned int i = 0; i < t.size(); ++i)
+          {
+            const double t_touch = t0 + t[i];
+            const double x       = neck[i] / a;
+            if (series.is_open())
+              series << t_touch * gamma / (eta * a) << ',' << x << ','
+                     << std::sqrt(1.5 * gamma * t_touch / (eta * a)) << '\n';
+            if (x < 0.3)
+              {
+                const double lx = std::log(t_touch), ly = std::log(x);
+                sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, n += 1;
+              }
+          }
+        const double slope = n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) :
+                                     std::numeric_limits<double>::quiet_NaN();
+        const double final_x = neck.back() / a;
+        table.add(run_row(level,
+                          run,
+                          {neck.back() / neck[0],
+                           slope,
+                           final_x,
+                           std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
+                           std::abs(run.metrics.at("volume_change").back())}));
+      }
+    check("finest neck growth x_end / x_0", table.finest("neck_growth"),
+          options, "min-neck-growth", false);
+    check("finest solid-volume drift", table.finest("volume_drift"), options,
+          "max-volume-drift");
+    check("finest early log-log slope (>=)", table.finest("early_slope"),
+          options, "min-early-slope", false);
+    check("finest early log-log slope (<=)", table.finest("early_slope"),
+          options, "max-early-slope");
+    check("finest final radius error against 2^(1/3) a",
+          table.finest("final_radius_error"), options,
+          "max-final-radius-error");
+    check_iterations(runs, options);
+  }
+
+  // A closed pore among the scene's particles: its area (the atmosphere in
+  // a window around the particles' centroid) after every step, the time
+  // at which it has vanished, and the solid-area drift.
+  void
+  pore(const std::string               &scene_file,
+       const std::vector<unsigned int> &levels,
+       const Options                   &options)
+  {
+    constexpr int dim = 2;
+    const auto    w   = options.limits.find("pore-half-width");
+    if (w == options.limits.end())
+      throw std::runtime_error("the pore case needs --pore-half-width");
+    Table table(run_columns({"initial_pore_area", "closure_time",
+                             "final_pore_area_ratio", "area_drift"}),
+                options.csv);
+    for (const unsigned int level : levels)
+      {
+        double        area0 = 0, area = 0;
+        double        closure = std::numeric_limits<double>::quiet_NaN();
+        std::ofstream series  = open_series(options, level, "time,pore_area");
+        const auto    run     = run_level<dim>(
+          scene_file,
+          level,
+          options,
+          "pore",
+          [&](Simulation<dim> &simulation, const SceneParameters &scene) {
+            Point<dim> centroid;
+            for (const auto &p : scene.geometry.particles)
+              for (unsigned int d = 0; d < dim; ++d)
+                centroid[d] += p[d] / scene.geometry.particles.size();
+            Tensor<1, dim> half;
+            for (unsigned int d = 0; d < dim; ++d)
+              half[d] = w->second;
+            const BoundingBox<dim> window(
+              std::make_pair(Point<dim>(centroid - half), centroid + half));
+            area0 = area = interface_measures::atmosphere_volume(
+              simulation.level_set(), window);
+            if (series.is_open())
+              series << "0," << area0 << '\n';
+            simulation.set_step_observer(
+              [&, window](unsigned int,
+                          const double              t,
+                          const LevelSetField<dim> &alpha) {
+                area = interface_measures::atmosphere_volume(alpha, window);
+                // Closed: what is left is round-off of the cut quadrature.
+                if (area < 1e-9 * area0 && std::isnan(closure))
+                  closure = t;
+                if (series.is_open())
+                  series << t << ',' << area << '\n';
+              });
+          });
+        table.add(run_row(level,
+                          run,
+                          {area0,
+                           closure,
+                           area / area0,
+                           std::abs(run.metrics.at("volume_change").back())}));
+      }
+    check("finest final pore area / initial",
+          table.finest("final_pore_area_ratio"), options,
+          "max-pore-area-ratio");
+    check("finest solid-area drift", table.finest("area_drift"), options,
+          "max-area-drift");
+  }
+
+  // Particles of any sizes that merge into one: at the end, the interface
+  // length against that of the circle with the same area (the shape the
+  // pair relaxes to; a half circle per symmetry plane), and the area drift.
+  void
+  coalescence(const std::string               &scene_file,
+              const std::vector<unsigned int> &levels,
+              const Options                   &options)
+  {
+    constexpr int dim = 2;
+    Table table(run_columns({"roundness_error", "area_drift"}), options.csv);
+    for (const unsigned int level : levels)
+      {
+        interface_measures::VolumeAndArea end;
+        const auto                        run = run_level<dim>(
+          scene_file,
+          level,
+          options,
+          "coalescence",
+          [&](Simulation<dim> &simulation, const SceneParameters &) {
+            simulation.set_step_observer(
+              [&](unsigned int, double, const LevelSetField<dim> &alpha) {
+                end = interface_measures::volume_and_area(alpha);
+              });
+          });
+        const double parts =
+          std::pow(2., run.scene.viscous_flow.symmetry_boundaries.size());
+        const double radius = std::sqrt(parts * end.solid_volume / M_PI);
+        table.add(run_row(
+          level,
+          run,
+          {end.interface_area / (2 * M_PI * radius / parts) - 1,
+           std::abs(run.metrics.at("volume_change").back())}));
+      }
+    check("finest interface length / that of the round shape - 1",
+          table.finest("roundness_error"), options, "max-roundness-error");
+    check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
     check("finest rejected steps", finest_rejected, options, "max-rejected");
     check("finest rejected steps", finest_rejected, options, "min-rejected",
@@ -621,6 +901,12 @@ main(int argc, char **argv)
                parse_options(args, 4));
       else if (args[0] == "hopper")
         hopper(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "spheres")
+        spheres(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "pore")
+        pore(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "coalescence")
+        coalescence(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")
         {
           // Print the reference for a check against the quoted values.

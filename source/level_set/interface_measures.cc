@@ -103,6 +103,31 @@ namespace levelsinter::interface_measures
 
   template <int dim>
   double
+  atmosphere_volume(const LevelSetField<dim> &level_set,
+                    const BoundingBox<dim>   &window)
+  {
+    // The window's cells minus the solid in them; cells fully in the
+    // atmosphere are skipped by the cut integration but counted here.
+    double cells = 0, solid = 0;
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && window.point_inside(cell->center()))
+        cells += cell->measure();
+    integrate_cut<dim>(
+      level_set,
+      update_JxW_values,
+      update_default,
+      [&](const FEValues<dim> &values) {
+        if (window.point_inside(values.get_cell()->center()))
+          for (const unsigned int q : values.quadrature_point_indices())
+            solid += values.JxW(q);
+      },
+      [](const NonMatching::FEImmersedSurfaceValues<dim> &) {});
+    return Utilities::MPI::sum(cells - solid,
+                               level_set.dof_handler().get_communicator());
+  }
+
+  template <int dim>
+  double
   interface_integral(
     const LevelSetField<dim> &level_set,
     const std::function<double(const Point<dim> &, const Tensor<1, dim> &)>
@@ -317,6 +342,10 @@ namespace levelsinter::interface_measures
   volume_and_area(const LevelSetField<2> &);
   template VolumeAndArea
   volume_and_area(const LevelSetField<3> &);
+  template double
+  atmosphere_volume(const LevelSetField<2> &, const BoundingBox<2> &);
+  template double
+  atmosphere_volume(const LevelSetField<3> &, const BoundingBox<3> &);
   template double
   interface_integral(
     const LevelSetField<2> &,

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/numerics/vector_tools.h>
@@ -6,6 +8,7 @@
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
+#include <ctime>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -123,7 +126,11 @@ namespace levelsinter
     }
     {
       TimerOutput::Scope scope(timer, "viscous flow: solve");
-      last_iterations = operator_->solve();
+      const std::clock_t start = std::clock();
+      last_iterations          = operator_->solve();
+      last_solve_cpu           = Utilities::MPI::sum(
+        double(std::clock() - start) / CLOCKS_PER_SEC,
+        alpha.dof_handler().get_communicator());
     }
 
     // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by

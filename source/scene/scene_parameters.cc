@@ -550,11 +550,15 @@ namespace levelsinter
     // through the filter, which saturates at E; and between two adaptations
     // the interface moves up to adapt_interval * CFL finest cells, which the
     // band must still hold (plus one cell for the cut cell itself).
-    if (refinement.band_width > level_set.filter_thickness)
+    // At E itself every saturated node reads as "in the band", which
+    // refines the whole box: on an adaptive mesh the band must stay below E.
+    if (refinement.band_width > level_set.filter_thickness ||
+        (refinement.band_width == level_set.filter_thickness &&
+         refinement.min_level < refinement.max_level))
       fail("Mesh refinement/Band width",
-           "must not exceed Level set/Filter thickness (" +
+           "must be smaller than Level set/Filter thickness (" +
              std::to_string(level_set.filter_thickness) +
-             "): beyond E the filtered level set carries no distance");
+             "): from E on the filtered level set carries no distance");
     {
       double h_coarse = 0;
       for (unsigned int i = 0; i < d; ++i)

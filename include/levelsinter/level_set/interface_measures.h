@@ -1,5 +1,6 @@
 #pragma once
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 
@@ -32,6 +33,16 @@ namespace levelsinter
      * The integral over {alpha_h = 0} of f(x, n), n the unit normal pointing
      * out of the solid (e.g. Fourier modes of a perturbed circle).
      */
+    /**
+     * Volume (area in 2D) of the atmosphere {alpha_h > 0} in the cells whose
+     * centre lies in @p window: with a window that holds a closed pore and
+     * solid around it, the pore's volume.
+     */
+    template <int dim>
+    double
+    atmosphere_volume(const LevelSetField<dim> &level_set,
+                      const BoundingBox<dim>   &window);
+
     template <int dim>
     double
     interface_integral(

@@ -3,6 +3,9 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <vector>
 
 namespace levelsinter
 {
@@ -13,40 +16,33 @@ namespace levelsinter
    *   [A  B^T] [v]   [f]
    *   [B  -C ] [p] = [g]
    * (A viscous, C the ASGS stabilisation plus the compressibility mass):
-   *   P = [A  B^T; 0  -S],  S ~ B A^{-1} B^T + C ~ M_{1/eta} + C,
-   * with one AMG V-cycle for A and one for the assembled S approximation.
-   * The viscosity-weighted pressure mass is spectrally equivalent to
-   * B A^{-1} B^T independently of h and of the viscosity contrast (Grinevich
-   * & Olshanskii 2009), so the outer FGMRES iteration count should stay flat.
+   *   P = [A  B^T; 0  -S],  S ~ B A^{-1} B^T + C ~ M_{1/eta_K} + C,
+   * with one AMG V-cycle for A and one for the assembled S approximation
+   * (step-32/55 structure). M_{1/eta_K} weights the pressure mass with the
+   * inverse of the cell-mean viscosity (Grinevich & Olshanskii 2009), which
+   * keeps the outer FGMRES count flat in h and in the viscosity contrast
+   * (doc/numerics.md, "Stokes preconditioner").
    */
   class BlockSchurPreconditioner
   {
   public:
+    /**
+     * Set up both AMG hierarchies: A with @p velocity_near_null_space (the
+     * rigid-body modes, one vector per mode over the locally owned rows of
+     * A), S from @p schur_approximation.
+     */
     BlockSchurPreconditioner(
       const TrilinosWrappers::BlockSparseMatrix &system_matrix,
-      const TrilinosWrappers::PreconditionAMG   &velocity_amg,
-      const TrilinosWrappers::PreconditionAMG   &schur_amg)
-      : system_matrix(system_matrix)
-      , velocity_amg(velocity_amg)
-      , schur_amg(schur_amg)
-    {}
+      const TrilinosWrappers::SparseMatrix      &schur_approximation,
+      const std::vector<std::vector<double>>    &velocity_near_null_space);
 
     void
     vmult(TrilinosWrappers::MPI::BlockVector       &dst,
-          const TrilinosWrappers::MPI::BlockVector &src) const
-    {
-      // p = -S^{-1} g, then v = A^{-1} (f - B^T p).
-      schur_amg.vmult(dst.block(1), src.block(1));
-      dst.block(1) *= -1.;
-      TrilinosWrappers::MPI::Vector residual(src.block(0));
-      system_matrix.block(0, 1).vmult(residual, dst.block(1));
-      residual.sadd(-1., src.block(0));
-      velocity_amg.vmult(dst.block(0), residual);
-    }
+          const TrilinosWrappers::MPI::BlockVector &src) const;
 
   private:
     const TrilinosWrappers::BlockSparseMatrix &system_matrix;
-    const TrilinosWrappers::PreconditionAMG   &velocity_amg;
-    const TrilinosWrappers::PreconditionAMG   &schur_amg;
+    TrilinosWrappers::PreconditionAMG          velocity_amg;
+    TrilinosWrappers::PreconditionAMG          schur_amg;
   };
 } // namespace levelsinter

@@ -147,6 +147,8 @@ namespace levelsinter
 
     TrilinosWrappers::BlockSparseMatrix system_matrix;
     TrilinosWrappers::BlockSparseMatrix schur_matrix; // (1,1) block only
+    // Near-null space of the viscous block for its AMG.
+    std::vector<std::vector<double>> velocity_modes;
     BlockVector                         system_rhs;
     // The direct solver needs the system as one matrix.
     TrilinosWrappers::SparseMatrix monolithic_matrix;
