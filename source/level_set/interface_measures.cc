@@ -358,10 +358,38 @@ namespace levelsinter::interface_measures
   shape_error(const LevelSetField<2> &, const Function<2> &);
   template ShapeError
   shape_error(const LevelSetField<3> &, const Function<3> &);
+  template <int dim>
+  double
+  smallest_neck_radius(const LevelSetField<dim>               &level_set,
+                       const std::vector<std::vector<double>> &particles)
+  {
+    double neck = std::numeric_limits<double>::quiet_NaN();
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      for (unsigned int j = i + 1; j < particles.size(); ++j)
+        {
+          Point<dim> c1, c2;
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              c1[d] = particles[i][d];
+              c2[d] = particles[j][d];
+            }
+          if (particles.size() == 2 ||
+              c1.distance(c2) < particles[i][dim] + particles[j][dim])
+            neck = std::fmin(neck, neck_radius(level_set, c1, c2));
+        }
+    return neck;
+  }
+
   template double
   neck_radius(const LevelSetField<2> &, const Point<2> &, const Point<2> &);
   template double
   neck_radius(const LevelSetField<3> &, const Point<3> &, const Point<3> &);
+  template double
+  smallest_neck_radius(const LevelSetField<2> &,
+                       const std::vector<std::vector<double>> &);
+  template double
+  smallest_neck_radius(const LevelSetField<3> &,
+                       const std::vector<std::vector<double>> &);
   template GradientNormError
   gradient_norm_error(const LevelSetField<2> &, const LevelSetFilter &);
   template GradientNormError

@@ -94,14 +94,16 @@ namespace levelsinter
   std::vector<std::string>
   SurfaceDiffusion<dim>::metric_names() const
   {
-    return {"surface_diffusion_iterations", "volume_correction_speed"};
+    return {"surface_diffusion_iterations",
+            "surface_diffusion_solve_cpu_time",
+            "volume_correction_speed"};
   }
 
   template <int dim>
   std::vector<double>
   SurfaceDiffusion<dim>::metric_values() const
   {
-    return {double(iterations), correction_speed};
+    return {double(iterations), solver.solve_cpu_time, correction_speed};
   }
 
   template class SurfaceDiffusion<2>;

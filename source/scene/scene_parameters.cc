@@ -321,13 +321,14 @@ namespace levelsinter
                         "that restores, over each step, the solid volume of "
                         "t = 0.");
       prm.declare_entry("Linear solver",
-                        "direct",
+                        "gmres",
                         Patterns::Selection("direct|gmres"),
-                        "direct: KLU (Trilinos Amesos) on the coupled system, "
-                        "robust at any dt; gmres: FGMRES with a block "
-                        "Schur-complement preconditioner (AMG-preconditioned "
-                        "CG inside), whose iterations grow with C_s dt / h^4 "
-                        "(doc/validation.md).");
+                        "gmres: FGMRES with a block-triangular preconditioner "
+                        "(Schur complement (M + b L) M^-1 (M + b K), CG with "
+                        "AMG inside), 20-30 iterations whatever h and dt, "
+                        "runs in parallel; direct: KLU (Trilinos Amesos) on "
+                        "the coupled system, serial factorisation, for small "
+                        "2D checks (doc/numerics.md).");
     }
     prm.leave_subsection();
 

@@ -214,16 +214,15 @@ namespace levelsinter
                                    velocity.max_norm(),
                                    double(last_iterations),
                                    wall};
+        // The neck of two particles; in a packing the smallest neck over
+        // the pairs that overlap at t = 0.
         const auto &particles = scene.geometry.particles;
-        if (scene.geometry.shape == "particles" && particles.size() == 2)
+        if (scene.geometry.shape == "particles" && particles.size() >= 2)
           {
-            Point<dim> c1, c2;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                c1[d] = particles[0][d];
-                c2[d] = particles[1][d];
-              }
-            row.push_back(interface_measures::neck_radius(alpha, c1, c2));
+            const double neck =
+              interface_measures::smallest_neck_radius(alpha, particles);
+            if (!std::isnan(neck))
+              row.push_back(neck);
           }
         const bool has_neck = row.size() > 11;
         for (const auto &mechanism : mechanisms)

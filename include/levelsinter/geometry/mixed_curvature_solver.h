@@ -32,12 +32,12 @@ namespace levelsinter
    * (kappa, then v_s), kept to measure what the coupling buys.
    *
    * Solver: v_s is scaled by s = sqrt(C/dt), which turns the system into
-   * [[M, -b K_A], [b L, M_g]] with b = sqrt(C dt); GMRES is preconditioned
-   * by the PRESB block matrix [[M, -b K], [b K, M + 2 b K]] (K the plain
-   * stiffness matrix), whose inverse needs two solves with M + b K (one AMG
-   * V-cycle each). For K_A = L = K it bounds the preconditioned spectrum in
-   * [1/2, 1] independently of h and dt (Axelsson, Neytcheva, Boyanova), so
-   * the iteration count stays flat under refinement.
+   * [[M, -b K_A], [b L, M_g]] with b = sqrt(C dt). Either KLU on the whole
+   * system (serial factorisation), or FGMRES with the block upper-triangular
+   * preconditioner whose Schur complement M_g + b^2 L M^-1 K_A is replaced
+   * by (M + b L) M^-1 (M + b K_A), each factor inverted by CG with AMG
+   * (Bosch, Stoll & Benner 2014 for Cahn-Hilliard, adapted to L != K_A;
+   * doc/numerics.md): 20-30 iterations independently of h and dt.
    */
   template <int dim>
   class MixedCurvatureSolver
@@ -49,8 +49,8 @@ namespace levelsinter
     struct Settings
     {
       bool         coupled        = true;
-      // KLU on the assembled 2x2 system, or GMRES (see the class comment).
-      bool         direct         = true;
+      // KLU on the assembled 2x2 system, or FGMRES (see the class comment).
+      bool         direct         = false;
       double       tolerance      = 1e-8;
       unsigned int max_iterations = 500;
       // Nodal normals (Eq. 84) from the gradient of the interpolated
@@ -127,8 +127,10 @@ namespace levelsinter
     const Settings       settings;
     TimerOutput         &timer;
 
-    // Blocks of the (scaled) system, rows (kappa, v_s), and M + b K.
-    TrilinosWrappers::SparseMatrix kk, kv, vk, vv, presb;
+    // Blocks of the (scaled) system, rows (kappa, v_s), and the factors
+    // M + b L, M + b K_A of the Schur-complement approximation.
+    TrilinosWrappers::SparseMatrix kk, kv, vk, vv, tangential_shift,
+      isotropic_shift;
     Vector                         rhs;
     Vector                         kappa;
     Vector                         velocity;
@@ -137,5 +139,7 @@ namespace levelsinter
   public:
     /** CG iterations of the inner solves in the last coupled solve. */
     unsigned int inner_iterations = 0;
+    /** CPU seconds of the last linear solve, summed over the ranks. */
+    double solve_cpu_time = 0;
   };
 } // namespace levelsinter

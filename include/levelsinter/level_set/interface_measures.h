@@ -82,6 +82,16 @@ namespace levelsinter
                 const Point<dim>         &c2);
 
     /**
+     * The smallest neck_radius() over the pairs of particles (x, y[, z], r)
+     * that overlap, or of the pair if there are exactly two; NaN without
+     * such a pair.
+     */
+    template <int dim>
+    double
+    smallest_neck_radius(const LevelSetField<dim>               &level_set,
+                         const std::vector<std::vector<double>> &particles);
+
+    /**
      * How well alpha satisfies the reinitialisation target |grad alpha| =
      * g(alpha) (Eq. 67) where the filter is not saturated (|d| <= E/2):
      * the largest and the root-mean-square deviation over that region.
