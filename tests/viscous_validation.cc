@@ -874,9 +874,6 @@ namespace
           table.finest("roundness_error"), options, "max-roundness-error");
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
-    check("finest rejected steps", finest_rejected, options, "max-rejected");
-    check("finest rejected steps", finest_rejected, options, "min-rejected",
-          false);
   }
 } // namespace
 
