@@ -495,11 +495,12 @@ namespace
 
   // Run the scene with the finest cells at @p level (h = box height /
   // subdivisions / 2^level), band and filter thickness tied to h (options
-  // --band-cells, default 6, and --filter-cells, default band + 2);
+  // --band-cells, default 6, and --filter-cells, default 8);
   // --dt-factor F fixes dt = F eta_s h / gamma (F times the explicit
   // capillary limit at factor 1) with no CFL or capillary limit: the
-  // interface then moves up to ~F cells a step, so the default band is
-  // max(6, F + 2) cells and the mesh is adapted every step.
+  // interface then moves up to ~F cells a step, so the defaults become
+  // max(6, F + 2) and max(8, F + 4) cells and the mesh is adapted every
+  // step.
   // @p initialise(simulation, scene) may replace the initial level set.
   template <int dim, typename Initialise>
   LevelRun
@@ -527,7 +528,8 @@ namespace
       {{"Mesh refinement/Maximum level", std::to_string(level)},
        {"Mesh refinement/Band width", std::to_string(band_cells * run.h)},
        {"Level set/Filter thickness",
-        std::to_string(option("filter-cells", band_cells + 2) * run.h)},
+        std::to_string(option("filter-cells", std::max(8., dt_factor + 4)) *
+                       run.h)},
        {"Output/Directory", directory},
        {"Output/Field formats", "none"}});
     if (dt_factor > 0)
