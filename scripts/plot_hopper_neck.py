@@ -2,7 +2,8 @@
 (viscous_validation hopper|spheres ... --csv FILE writes FILE.levelN.csv with
 the columns time, neck, reference): one curve per level and the reference
 (Hopper's exact solution, or Frenkel-Eshelby's early law for the spheres).
-Usage: plot_hopper_neck.py OUT.png [--loglog] FILE.level4.csv ..."""
+Usage: plot_hopper_neck.py OUT.png [--loglog] [LABEL=]FILE.level4.csv ...
+(the label defaults to the level part of the file name)."""
 import csv
 import sys
 
@@ -22,12 +23,13 @@ LABELS = {
 
 files = [a for a in sys.argv[2:] if a != "--loglog"]
 fig, ax = plt.subplots(figsize=(6, 4))
-for name in files:
+for argument in files:
+    label, _, name = argument.rpartition("=")
     reader = csv.reader(open(name))
     columns = next(reader)
     rows = [[float(v) for v in r] for r in reader]
     t = [r[0] for r in rows]
-    ax.plot(t, [r[1] for r in rows], label=name.rsplit(".", 2)[-2])
+    ax.plot(t, [r[1] for r in rows], label=label or name.rsplit(".", 2)[-2])
     reference = [r[2] for r in rows]
 ax.plot(t, reference, "k--", label=LABELS[columns[2]])
 if "--loglog" in sys.argv:

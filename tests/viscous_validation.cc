@@ -8,17 +8,21 @@
 //   levelsinter_viscous_validation coalescence SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
-// bubble); FORMS: comma-separated surface-tension forms (csf, sharp).
+// bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
+// csf-curvature, csf-curvature-exact).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
-// --max-core-error, --max-C,
+// --max-core-error, --max-C, --max-curvature-error,
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
-// --max-stokes-its; spheres: --min-neck-growth, --max-volume-drift,
+// --max-stokes-its, hopper: --max-rejected, --min-rejected; spheres:
+// --min-neck-growth, --max-volume-drift,
 // --min-early-slope, --max-early-slope, --max-final-radius-error; pore:
 // --pore-half-width W (required: a square window of half-width W around
 // the particles' centroid that holds the pore and solid only),
 // --max-pore-area-ratio, --max-area-drift; coalescence:
 // --max-roundness-error, --max-area-drift) and for all but the bubble the
-// band and filter thickness in cells (--band-cells, --filter-cells).
+// band and filter thickness in cells (--band-cells, --filter-cells) and a
+// fixed step --dt-factor F (dt = F eta_s h / gamma, no CFL or capillary
+// limit).
 // Exit code 0 only if every check passes.
 
 #include <deal.II/base/mpi.h>
@@ -43,10 +47,12 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -69,6 +75,32 @@ namespace
     return dir;
   }
 
+  // NonMatching FEValues of @p fe for the regions of {alpha_h = 0} that
+  // @p flags asks for, 3 Gauss points per direction; owns the classifier
+  // the values read.
+  template <int dim>
+  struct CutCellValues
+  {
+    CutCellValues(const FiniteElement<dim>             &fe,
+                  const LevelSetField<dim>             &alpha,
+                  const NonMatching::RegionUpdateFlags &flags)
+      : classifier(alpha.dof_handler(), alpha.alpha())
+      , fe_collection(fe)
+      , values(fe_collection,
+               QGauss<1>(3),
+               flags,
+               classifier,
+               alpha.dof_handler(),
+               alpha.alpha())
+    {
+      classifier.reclassify();
+    }
+
+    NonMatching::MeshClassifier<dim> classifier;
+    const hp::FECollection<dim>      fe_collection;
+    NonMatching::FEValues<dim>       values;
+  };
+
   // Mean pressure over the discrete solid {alpha_h < 0} (cut-cell
   // quadrature) and over the pore, and their areas.
   template <int dim>
@@ -76,19 +108,11 @@ namespace
   mean_pressures(const TwoPhaseStokes<dim> &stokes,
                  const LevelSetField<dim>  &alpha)
   {
-    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
-                                                alpha.alpha());
-    classifier.reclassify();
     NonMatching::RegionUpdateFlags flags;
     flags.inside  = update_values | update_JxW_values;
     flags.outside = update_values | update_JxW_values;
-    const hp::FECollection<dim> fe_collection(stokes.fe());
-    NonMatching::FEValues<dim>  values(fe_collection,
-                                      QGauss<1>(3),
-                                      flags,
-                                      classifier,
-                                      alpha.dof_handler(),
-                                      alpha.alpha());
+    CutCellValues<dim> cut(stokes.fe(), alpha, flags);
+    auto              &values = cut.values;
     const FEValuesExtractors::Scalar pressure(dim);
     std::array<double, 4>            sums{{0, 0, 0, 0}};
     std::vector<double>              p;
@@ -153,7 +177,45 @@ namespace
     return {{sums[0] / sums[1], sums[2] / sums[3]}};
   }
 
+  // Relative error of the nodal curvature against @p exact at the points
+  // of the sharp surface quadrature on {alpha_h = 0}: {rms, max}.
+  template <int dim>
+  std::array<double, 2>
+  curvature_errors(const LevelSetField<dim>            &alpha,
+                   const TrilinosWrappers::MPI::Vector &kappa,
+                   const double                         exact)
+  {
+    NonMatching::RegionUpdateFlags flags;
+    flags.surface = update_values | update_JxW_values;
+    CutCellValues<dim> cut(alpha.fe(), alpha, flags);
+    auto              &values = cut.values;
+    std::array<double, 3> sums{{0, 0, 0}}; // int e^2, length, max |e|
+    std::vector<double>   k;
+    for (const auto &cell : alpha.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          values.reinit(cell);
+          if (const auto &surface = values.get_surface_fe_values())
+            {
+              k.resize(surface->n_quadrature_points);
+              surface->get_function_values(kappa, k);
+              for (const unsigned int q : surface->quadrature_point_indices())
+                {
+                  const double e = (k[q] - exact) / exact;
+                  sums[0] += e * e * surface->JxW(q);
+                  sums[1] += surface->JxW(q);
+                  sums[2] = std::max(sums[2], std::abs(e));
+                }
+            }
+        }
+    return {{std::sqrt(Utilities::MPI::sum(sums[0], MPI_COMM_WORLD) /
+                       Utilities::MPI::sum(sums[1], MPI_COMM_WORLD)),
+             Utilities::MPI::max(sums[2], MPI_COMM_WORLD)}};
+  }
+
   // Static bubble: one Stokes solve on a uniform mesh; p_in = gamma / R.
+  // FORMS are the scene's surface-tension forms plus csf-curvature-exact,
+  // the csf-curvature form with the curvature prescribed as 1/R.
   void
   bubble(const std::string              &scene_file,
          const std::vector<unsigned int> &levels,
@@ -161,13 +223,23 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table({"level", "h", "form", "dofs", "iterations", "solve_time",
-                 "p_in", "p_out", "pressure_error", "core_error", "C"},
+    const std::vector<std::string> form_ids = {"csf",
+                                               "sharp",
+                                               "csf-curvature",
+                                               "csf-curvature-exact"};
+    Table table({"level", "h", "form", "dofs", "iterations", "cpu_time",
+                 "p_in", "p_out", "pressure_error", "core_error", "C",
+                 "kappa_rms_error", "kappa_max_error"},
                 options.csv);
-    double worst_error = 0, worst_C = 0, worst_core = 0;
+    double worst_error = 0, worst_C = 0, worst_core = 0, worst_kappa = 0;
     for (const auto &form : forms)
       for (const unsigned int level : levels)
         {
+          const auto id = std::find(form_ids.begin(), form_ids.end(), form) -
+                          form_ids.begin();
+          if (id == int(form_ids.size()))
+            throw std::runtime_error("unknown surface-tension form " + form);
+          const bool exact_curvature = form == "csf-curvature-exact";
           const auto base = read_scene(scene_file, options.overrides);
           const double L =
             base.domain.upper_corner[0] - base.domain.lower_corner[0];
@@ -184,27 +256,31 @@ namespace
              {"Level set/Filter thickness", std::to_string(band)},
              {"Mesh refinement/Band width", std::to_string(band)},
              {"Time/CFL number", "0.1"},
-             {"Viscous flow/Surface tension form", form},
+             {"Viscous flow/Surface tension form",
+              exact_curvature ? "csf-curvature" : form},
              {"Output/Directory", output_directory("bubble")},
              {"Output/Field formats", "none"}});
           const auto      scene = read_scene(scene_file, overrides);
           Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
           simulation.initialise();
-          const auto &alpha = simulation.level_set();
+          const auto  &alpha = simulation.level_set();
+          const double R     = scene.geometry.particles[0][dim];
 
-          ViscousFlow<dim>   flow(scene.viscous_flow, simulation.timer());
+          ViscousFlow<dim>   flow(scene.viscous_flow,
+                                simulation.filter(),
+                                simulation.timer());
           VelocityField<dim> velocity(simulation.triangulation());
           velocity.setup_dofs();
           velocity.set_zero();
+          if (exact_curvature)
+            flow.prescribe_curvature(
+              std::make_shared<Functions::ConstantFunction<dim>>(1 / R));
           flow.setup(alpha);
-          const auto start = std::chrono::steady_clock::now();
+          const std::clock_t start = std::clock();
           flow.add_velocity(alpha, 0, 0, velocity);
-          const double solve_time =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                          start)
-              .count();
+          const double cpu_time = Utilities::MPI::sum(
+            double(std::clock() - start) / CLOCKS_PER_SEC, MPI_COMM_WORLD);
           const auto   p     = mean_pressures(flow.stokes(), alpha);
-          const double R     = scene.geometry.particles[0][dim];
           const double gamma = scene.viscous_flow.surface_tension;
           const double eta   = scene.viscous_flow.solid_viscosity;
           const double p_exact = gamma / R;
@@ -216,27 +292,36 @@ namespace
           const auto   core = core_pressures(flow.stokes(), centre, R);
           const double core_error =
             std::abs(core[0] - core[1] - p_exact) / p_exact;
-          table.add({double(level), h, form == "csf" ? 0. : 1.,
+          const auto kappa_error =
+            flow.curvature().size() > 0 ?
+              curvature_errors(alpha, flow.curvature(), 1 / R) :
+              std::array<double, 2>{{0., 0.}};
+          table.add({double(level), h, double(id),
                      double(flow.stokes().dof_handler().n_dofs()),
-                     flow.metric_values()[0], solve_time, p[0], p[1], error,
-                     core_error, C});
+                     flow.metric_values()[0], cpu_time, p[0], p[1], error,
+                     core_error, C, kappa_error[0], kappa_error[1]});
           if (level == levels.back())
             {
               worst_error = std::max(worst_error, error);
               worst_C     = std::max(worst_C, C);
               worst_core  = std::max(worst_core, core_error);
+              worst_kappa = std::max(worst_kappa, kappa_error[1]);
             }
         }
     if (root)
-      std::cout << "(form: 0 = csf, 1 = sharp; pressure_error = |p_in - p_out "
-                   "- gamma/R| / (gamma/R); core_error: the same with the "
-                   "means over r < R/2 and r > 3R/2)\n";
+      std::cout << "(form: 0 = csf, 1 = sharp, 2 = csf-curvature, 3 = "
+                   "csf-curvature with kappa = 1/R; pressure_error = |p_in - "
+                   "p_out - gamma/R| / (gamma/R); core_error: the same with "
+                   "the means over r < R/2 and r > 3R/2; kappa errors "
+                   "relative, on alpha_h = 0, csf-curvature only)\n";
     check("finest relative mean-pressure error (worst form)", worst_error,
           options, "max-pressure-error");
     check("finest C = v_max eta / gamma (worst form)", worst_C, options,
           "max-C");
     check("finest core pressure-jump error (worst form)", worst_core, options,
           "max-core-error");
+    check("finest max relative curvature error on the interface",
+          worst_kappa, options, "max-curvature-error");
   }
 
   // Hopper's exact coalescence of two equal cylinders of radius R (DESIGN.md
@@ -402,6 +487,8 @@ namespace
     unsigned int                               steps    = 0;
     unsigned int                               max_dofs = 0;
     double                                     wall_time = 0, cpu_time = 0;
+    double       mean_dt        = 0;
+    unsigned int rejected_steps = 0; // retried with a smaller dt
     // Per step: mean and largest FGMRES count, mean solve CPU time.
     double mean_its = 0, max_its = 0, mean_solve_cpu = 0;
   };
@@ -409,6 +496,11 @@ namespace
   // Run the scene with the finest cells at @p level (h = box height /
   // subdivisions / 2^level), band and filter thickness tied to h (options
   // --band-cells, default 6, and --filter-cells, default 8);
+  // --dt-factor F fixes dt = F eta_s h / gamma (F times the explicit
+  // capillary limit at factor 1) with no CFL or capillary limit: the
+  // interface then moves up to ~F cells a step, so the defaults become
+  // max(6, F + 2) and max(8, F + 4) cells and the mesh is adapted every
+  // step.
   // @p initialise(simulation, scene) may replace the initial level set.
   template <int dim, typename Initialise>
   LevelRun
@@ -424,19 +516,34 @@ namespace
             base.domain.subdivisions[1] / std::pow(2., level);
     const std::string directory =
       output_directory(name + "_level" + std::to_string(level));
-    const auto cells = [&](const std::string &key, const double fallback) {
+    const auto option = [&](const std::string &key, const double fallback) {
       const auto it = options.limits.find(key);
-      return (it == options.limits.end() ? fallback : it->second) * run.h;
+      return it == options.limits.end() ? fallback : it->second;
     };
-    auto overrides = options.overrides;
+    const double dt_factor  = option("dt-factor", 0);
+    const double band_cells = option("band-cells", std::max(6., dt_factor + 2));
+    auto         overrides  = options.overrides;
     overrides.insert(
       overrides.end(),
       {{"Mesh refinement/Maximum level", std::to_string(level)},
-       {"Mesh refinement/Band width", std::to_string(cells("band-cells", 6))},
+       {"Mesh refinement/Band width", std::to_string(band_cells * run.h)},
        {"Level set/Filter thickness",
-        std::to_string(cells("filter-cells", 8))},
-                      {"Output/Directory", directory},
-                      {"Output/Field formats", "none"}});
+        std::to_string(option("filter-cells", std::max(8., dt_factor + 4)) *
+                       run.h)},
+       {"Output/Directory", directory},
+       {"Output/Field formats", "none"}});
+    if (dt_factor > 0)
+      {
+        const auto viscous = read_scene(scene_file, overrides).viscous_flow;
+        overrides.insert(
+          overrides.end(),
+          {{"Time/Time step",
+            std::to_string(dt_factor * viscous.solid_viscosity * run.h /
+                           viscous.surface_tension)},
+           {"Time/CFL number", "0"},
+           {"Viscous flow/Capillary time step factor", "0"},
+           {"Mesh refinement/Adapt interval", "1"}});
+      }
     run.scene = read_scene(scene_file, overrides);
 
     Simulation<dim> simulation(run.scene, MPI_COMM_WORLD, std::cout);
@@ -447,6 +554,8 @@ namespace
     run.max_dofs       = summary.max_dofs;
     run.wall_time      = summary.wall_time;
     run.cpu_time       = summary.cpu_time;
+    run.mean_dt        = summary.time / summary.steps;
+    run.rejected_steps = summary.rejected_steps;
 
     run.metrics           = read_metrics(directory + "/metrics.csv");
     const auto &its       = run.metrics.at("stokes_iterations");
@@ -535,7 +644,8 @@ namespace
          const Options                   &options)
   {
     constexpr int dim = 2;
-    Table table(run_columns({"max_neck_error", "final_neck_error", "area_drift"}),
+    Table table(run_columns({"mean_dt", "rejected", "max_neck_error",
+                             "final_neck_error", "area_drift"}),
                 options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
@@ -578,7 +688,9 @@ namespace
           }
         table.add(run_row(level,
                           run,
-                          {max_error,
+                          {run.mean_dt,
+                           double(run.rejected_steps),
+                           max_error,
                            final_error,
                            std::abs(run.metrics.at("volume_change").back())}));
       }
@@ -586,6 +698,10 @@ namespace
           options, "max-neck-error");
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
+    check("finest rejected steps", table.finest("rejected"), options,
+          "max-rejected");
+    check("finest rejected steps", table.finest("rejected"), options,
+          "min-rejected", false);
     check_iterations(runs, options);
   }
 

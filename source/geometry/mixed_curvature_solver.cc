@@ -166,11 +166,25 @@ namespace levelsinter
     const QMidpoint<dim>        centre;
     FEValues<dim>               fe_values(level_set.fe(), centre, update_gradients);
     std::vector<Tensor<1, dim>> gradient(1);
+    dealii::Vector<double>      local_alpha(level_set.fe().dofs_per_cell);
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          fe_values.get_function_gradients(level_set.alpha(), gradient);
+          if (settings.normals_from_distance)
+            {
+              // The gradient of the Q1 interpolant of d instead of alpha:
+              // the filter's curvature f''(d) tilts the interpolant's
+              // gradient by O((h/E)^2), which does not vanish when E is a
+              // fixed number of cells.
+              cell->get_dof_values(level_set.alpha(), local_alpha);
+              gradient[0] = 0;
+              for (unsigned int i = 0; i < local_alpha.size(); ++i)
+                gradient[0] += filter.distance(local_alpha[i]) *
+                               fe_values.shape_grad(i, 0);
+            }
+          else
+            fe_values.get_function_gradients(level_set.alpha(), gradient);
           const double norm = gradient[0].norm();
           if (norm == 0)
             continue;

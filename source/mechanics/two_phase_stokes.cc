@@ -199,9 +199,12 @@ namespace levelsinter
   template <int dim>
   template <typename MatrixType, typename VectorType>
   void
-  TwoPhaseStokes<dim>::assemble_into(const LevelSetField<dim> &alpha,
-                                     MatrixType               &matrix,
-                                     VectorType               &rhs)
+  TwoPhaseStokes<dim>::assemble_into(
+    const LevelSetField<dim>            &alpha,
+    const TrilinosWrappers::MPI::Vector &curvature,
+    const double                         surface_time_step,
+    MatrixType                          &matrix,
+    VectorType                          &rhs)
   {
     matrix = 0;
     rhs    = 0;
@@ -211,12 +214,42 @@ namespace levelsinter
     const double            E = settings.interface_half_width;
     const SmoothedHeaviside heaviside(E);
     const double            gamma = settings.surface_tension;
-    const bool              csf =
-      settings.form == SurfaceTensionForm::csf && gamma != 0;
+    const bool              curvature_form =
+      settings.form == SurfaceTensionForm::csf_curvature && gamma != 0;
     const bool sharp = settings.form == SurfaceTensionForm::sharp && gamma != 0;
+    // Smeared surface measure delta(alpha) |grad alpha| dV: the tensorial
+    // csf load and, for both csf forms, the semi-implicit term.
+    const bool   smeared     = !sharp && gamma != 0;
+    const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
+    if (curvature_form &&
+        curvature.size() != alpha.dof_handler().n_dofs())
+      throw std::runtime_error(
+        "viscous flow: the csf-curvature surface-tension form needs a "
+        "curvature on the level-set DoFs");
+
+    // H_h of the balanced force: H_s at the level-set nodes, with the
+    // hanging-node constraints applied so that H_h lies in the (continuous)
+    // pressure space.
+    TrilinosWrappers::MPI::Vector solid_fraction;
+    if (curvature_form)
+      {
+        const MPI_Comm                comm = dofs.get_communicator();
+        TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+        for (const auto i : alpha.locally_owned())
+          owned(i) = heaviside.solid_fraction(alpha.alpha()(i));
+        owned.compress(VectorOperation::insert);
+        alpha.constraints().distribute(owned);
+        solid_fraction.reinit(alpha.locally_owned(),
+                              alpha.locally_relevant(),
+                              comm);
+        solid_fraction = owned;
+      }
 
     // Three Gauss points per direction: the smoothed coefficients and the
-    // Dirac vary across a cell of the band.
+    // Dirac vary across a cell of the band; for the balanced force the
+    // products grad H_h . w and H_h div w (degree 2 per direction) are
+    // integrated exactly, so the discrete integration by parts that makes
+    // f = grad(gamma kappa H_h) holds to round-off.
     const QGauss<dim>     quadrature(3);
     const QGauss<dim - 1> face_quadrature(2);
     FEValues<dim>         values(finite_element,
@@ -264,13 +297,45 @@ namespace levelsinter
     std::vector<double>                  alpha_q(quadrature.size());
     std::vector<PhaseCoefficients>       law_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_alpha_q(quadrature.size());
+    std::vector<double>                  kappa_q(quadrature.size());
+    std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> eps(n);
     std::vector<Tensor<2, dim>>          grad_w(n);
+    std::vector<Tensor<1, dim>>          w(n);
     std::vector<double>                  div(n), q(n);
     std::vector<Tensor<1, dim>>          grad_q(n);
     std::vector<unsigned int>            component(n);
     for (unsigned int i = 0; i < n; ++i)
       component[i] = finite_element.system_to_component_index(i).first;
+
+    // The tensorial load (if @p tensorial) and the semi-implicit
+    // Laplace-Beltrami term at one point of the surface measure with unit
+    // normal @p normal and weight @p dS; @p gradient(i) is grad w_i there.
+    const auto add_surface_point = [&](const Tensor<1, dim> &normal,
+                                       const double          dS,
+                                       const bool            tensorial,
+                                       const auto           &gradient) {
+      const Tensor<2, dim> projector =
+        unit_symmetric_tensor<dim>() - outer_product(normal, normal);
+      for (unsigned int i = 0; i < n; ++i)
+        if (component[i] < dim)
+          {
+            const Tensor<2, dim> grad_i = gradient(i);
+            if (tensorial)
+              cell_rhs(i) -= gamma * scalar_product(projector, grad_i) * dS;
+            if (implicit_dt > 0)
+              {
+                // grad_Gamma w = (grad w) P; the upper triangle suffices
+                // (mirrored below).
+                const Tensor<2, dim> surface_i = grad_i * projector;
+                for (unsigned int j = i; j < n; ++j)
+                  if (component[j] < dim)
+                    cell_matrix(i, j) +=
+                      implicit_dt * gamma *
+                      scalar_product(surface_i, gradient(j) * projector) * dS;
+              }
+          }
+    };
 
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
@@ -288,6 +353,12 @@ namespace levelsinter
           level_set_values.get_function_values(alpha.alpha(), alpha_q);
           level_set_values.get_function_gradients(alpha.alpha(),
                                                   grad_alpha_q);
+          if (curvature_form)
+            {
+              level_set_values.get_function_values(curvature, kappa_q);
+              level_set_values.get_function_gradients(solid_fraction,
+                                                      grad_heaviside_q);
+            }
           const double h = cell->diameter() / std::sqrt(double(dim));
           // The Schur approximation weighs the pressure mass with the
           // cell-mean viscosity (Grinevich & Olshanskii 2009): with the
@@ -311,6 +382,7 @@ namespace levelsinter
                 {
                   eps[i]    = values[velocity].symmetric_gradient(i, k);
                   grad_w[i] = values[velocity].gradient(i, k);
+                  w[i]      = values[velocity].value(i, k);
                   div[i]    = values[velocity].divergence(i, k);
                   q[i]      = values[pressure].value(i, k);
                   grad_q[i] = values[pressure].gradient(i, k);
@@ -355,7 +427,21 @@ namespace levelsinter
                     }
                 }
 
-              if (csf)
+              if (curvature_form)
+                {
+                  // f = gamma kappa grad H_h points into the solid (grad H_s
+                  // = -n delta), so p = gamma kappa H_h balances it. The
+                  // pressure rows carry f in tau (grad p - f) . grad q.
+                  const Tensor<1, dim> f =
+                    gamma * kappa_q[k] * grad_heaviside_q[k];
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs(i) += (component[i] < dim ?
+                                      f * w[i] :
+                                      -tau * (f * grad_q[i])) *
+                                   JxW;
+                }
+
+              if (smeared)
                 {
                   // dS -> delta(alpha) |grad alpha| dV: the co-area formula
                   // makes the smeared integral the average of the sharp one
@@ -363,17 +449,13 @@ namespace levelsinter
                   const double norm = grad_alpha_q[k].norm();
                   const double weight =
                     heaviside.dirac(alpha_q[k]) * norm * JxW;
-                  if (weight > 0)
-                    {
-                      const Tensor<1, dim> normal = grad_alpha_q[k] / norm;
-                      const Tensor<2, dim> projector =
-                        unit_symmetric_tensor<dim>() -
-                        outer_product(normal, normal);
-                      for (unsigned int i = 0; i < n; ++i)
-                        cell_rhs(i) -=
-                          gamma * scalar_product(projector, grad_w[i]) *
-                          weight;
-                    }
+                  if (weight > 0 && (!curvature_form || implicit_dt > 0))
+                    add_surface_point(grad_alpha_q[k] / norm,
+                                      weight,
+                                      !curvature_form,
+                                      [&](const unsigned int i) {
+                                        return grad_w[i];
+                                      });
                 }
             }
 
@@ -383,18 +465,13 @@ namespace levelsinter
               if (const auto &surface = cut_values->get_surface_fe_values())
                 for (const unsigned int k :
                      surface->quadrature_point_indices())
-                  {
-                    const Tensor<1, dim> normal = surface->normal_vector(k);
-                    const Tensor<2, dim> projector =
-                      unit_symmetric_tensor<dim>() -
-                      outer_product(normal, normal);
-                    for (unsigned int i = 0; i < n; ++i)
-                      cell_rhs(i) -=
-                        gamma *
-                        scalar_product(projector,
-                                       (*surface)[velocity].gradient(i, k)) *
-                        surface->JxW(k);
-                  }
+                  add_surface_point(surface->normal_vector(k),
+                                    surface->JxW(k),
+                                    true,
+                                    [&](const unsigned int i) {
+                                      return (*surface)[velocity].gradient(i,
+                                                                           k);
+                                    });
             }
 
           // Free faces: traction -p_ext n.
@@ -439,12 +516,17 @@ namespace levelsinter
 
   template <int dim>
   void
-  TwoPhaseStokes<dim>::assemble(const LevelSetField<dim> &alpha)
+  TwoPhaseStokes<dim>::assemble(
+    const LevelSetField<dim>            &alpha,
+    const TrilinosWrappers::MPI::Vector &curvature,
+    const double                         surface_time_step)
   {
     if (settings.direct_solver)
-      assemble_into(alpha, monolithic_matrix, monolithic_rhs);
+      assemble_into(
+        alpha, curvature, surface_time_step, monolithic_matrix, monolithic_rhs);
     else
-      assemble_into(alpha, system_matrix, system_rhs);
+      assemble_into(
+        alpha, curvature, surface_time_step, system_matrix, system_rhs);
   }
 
   template <int dim>

@@ -13,15 +13,14 @@ namespace levelsinter
     if (scene.velocity.type != "none")
       mechanisms.push_back(std::make_unique<PrescribedVelocity<dim>>(
         scene.velocity, scene.level_set.theta));
+    const LevelSetFilter filter(scene.level_set.filter,
+                                scene.level_set.filter_thickness);
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
-        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow, timer));
+        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow, filter, timer));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
-        scene.surface_diffusion,
-        LevelSetFilter(scene.level_set.filter,
-                       scene.level_set.filter_thickness),
-        timer));
+        scene.surface_diffusion, filter, timer));
     return mechanisms;
   }
 

@@ -48,11 +48,23 @@ namespace levelsinter
                         "0: incompressible atmosphere.");
       prm.declare_entry("Surface tension form",
                         "sharp",
-                        Patterns::Selection("csf|sharp"),
+                        Patterns::Selection("csf|sharp|csf-curvature"),
                         "Tensorial form gamma (I - n n) : grad w (Eq. 108), "
                         "integrated with the regularised Dirac (csf, Eq. "
                         "100-104) or on the zero level set with cut-cell "
-                        "quadrature (sharp).");
+                        "quadrature (sharp); or csf-curvature: the force "
+                        "gamma kappa grad H_h (Eq. 100 in balanced-force "
+                        "form, H_h the Q1 smoothed solid fraction) with the "
+                        "curvature projected from the level set.");
+      prm.declare_entry("Surface tension time integration",
+                        "explicit",
+                        Patterns::Selection("explicit|semi-implicit"),
+                        "explicit: the load at the current interface, "
+                        "stable for dt below the capillary limit (see "
+                        "'Capillary time step factor'); semi-implicit: the "
+                        "Laplace-Beltrami term at the new position x + dt v "
+                        "(adds dt gamma int grad_s v : grad_s w to the "
+                        "velocity block), no capillary limit.");
       prm.declare_entry("Interface half width",
                         "1.5",
                         Patterns::Double(0),
@@ -93,7 +105,8 @@ namespace levelsinter
                         "1",
                         Patterns::Double(0),
                         "c in the explicit capillary limit dt <= c eta_s "
-                        "h_min / gamma; 0 disables it.");
+                        "h_min / gamma; 0 disables it. Not applied with "
+                        "semi-implicit surface tension.");
     }
     prm.leave_subsection();
   }
@@ -109,6 +122,8 @@ namespace levelsinter
     fluid_viscosity        = prm.get_double("Fluid viscosity");
     fluid_compressibility  = prm.get_double("Fluid compressibility");
     surface_tension_form   = prm.get("Surface tension form");
+    semi_implicit_surface_tension =
+      prm.get("Surface tension time integration") == "semi-implicit";
     interface_half_width   = prm.get_double("Interface half width");
     stabilisation_constant = prm.get_double("Stabilisation constant");
     external_pressure      = prm.get_double("External pressure");

@@ -310,6 +310,8 @@ namespace levelsinter
               compute_interface_velocity(t, dt);
             }
           last_iterations = transport.advance(alpha, velocity, dt);
+          for (auto &mechanism : mechanisms)
+            mechanism->check_step(alpha);
           return dt;
         }
       catch (const std::exception &failure)
@@ -320,6 +322,7 @@ namespace levelsinter
               std::to_string(max_retries + 1) +
               " times, the last time with dt = " + std::to_string(dt) +
               ": " + failure.what());
+          ++summary.rejected_steps;
           pcout << "step from t = " << t << " with dt = " << dt
                 << " failed; retrying with dt = " << dt / 2 << ". Reason: "
                 << failure.what() << std::endl;

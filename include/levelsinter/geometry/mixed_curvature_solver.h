@@ -53,6 +53,11 @@ namespace levelsinter
       bool         direct         = false;
       double       tolerance      = 1e-8;
       unsigned int max_iterations = 500;
+      // Nodal normals (Eq. 84) from the gradient of the interpolated
+      // distance d = filter^-1(alpha) rather than of alpha: kappa then
+      // converges at second order with E a fixed number of cells
+      // (doc/numerics.md, "Surface-tension forms").
+      bool normals_from_distance = false;
     };
 
     MixedCurvatureSolver(const LevelSetFilter &filter,

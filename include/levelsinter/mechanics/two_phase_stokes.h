@@ -26,17 +26,31 @@ namespace levelsinter
    * Velocity-pressure problem on the whole box with phases from the level
    * set (paper Eq. 93-94 with the phase law of PhaseLaw):
    *   int a1 eps(v):eps(w) - a2 p div w = F_gamma(w) - int_free p_ext n.w
-   *   -int q div v - int c_p p q - sum_K int_K tau_K grad p . grad q = 0
+   *   -int q div v - int c_p p q - sum_K int_K tau_K (grad p - f) . grad q = 0
    * Equal-order Q1/Q1 with ASGS pressure stabilisation (Eq. 98),
    * tau_K = c_tau a2 h_K^2 / a1 (Eq. 99, c_tau = 1 there). Surface tension
-   * uses the tensorial form (Eq. 108) with the sign of Laplace's law
-   * p_in - p_out = gamma kappa:
-   *   F_gamma(w) = -gamma int_Gamma (I - n (x) n) : grad w,
-   * over Gamma either smeared with the regularised Dirac (CSF, Eq. 100-104,
-   * dS -> delta(alpha) |grad alpha| dV) or sharp on {alpha_h = 0} with
-   * NonMatching quadrature. The form is exact for rigid motions (their
-   * gradient is skew), so the discrete capillary load has zero net force and
-   * torque and pinning rigid modes leaves no reaction.
+   * (sign of Laplace's law p_in - p_out = gamma kappa) in one of three
+   * forms:
+   * - tensorial (Eq. 108), F_gamma(w) = -gamma int_Gamma (I - n (x) n) :
+   *   grad w, over Gamma either smeared with the regularised Dirac (csf,
+   *   Eq. 100-104, dS -> delta(alpha) |grad alpha| dV) or sharp on
+   *   {alpha_h = 0} with NonMatching quadrature. Exact for rigid motions
+   *   (their gradient is skew): zero net force and torque, so pinning rigid
+   *   modes leaves no reaction. It is a surface functional, not a force
+   *   density, so f = 0 in the stabilisation.
+   * - csf_curvature (Eq. 100 written as a balanced force),
+   *   F_gamma(w) = int f . w with f = gamma kappa_h grad H_h, where H_h is
+   *   the Q1 interpolant of the smoothed solid fraction H_s(alpha_h)
+   *   (Eq. 102) and kappa_h the nodal curvature passed to assemble(): for
+   *   constant kappa_h, f is the gradient of p_h = gamma kappa H_h, a member
+   *   of the pressure space, so (v, p) = (0, p_h) solves the discrete
+   *   problem exactly; the residual-consistent stabilisation (the same f in
+   *   tau_K (grad p - f)) keeps it so.
+   * A positive surface time step dt in assemble() makes the load
+   * semi-implicit (Baensch 2001): the Laplace-Beltrami form at the new
+   * position x + dt v adds dt gamma int_Gamma grad_Gamma v : grad_Gamma w
+   * to the velocity block, on the same surface measure as the load (sharp
+   * for sharp, smeared otherwise).
    */
   template <int dim>
   class TwoPhaseStokes
@@ -45,7 +59,8 @@ namespace levelsinter
     enum class SurfaceTensionForm
     {
       csf,
-      sharp
+      sharp,
+      csf_curvature
     };
 
     struct Settings
@@ -72,9 +87,17 @@ namespace levelsinter
     void
     setup_dofs();
 
-    /** Assemble matrix and right-hand side for the level set @p alpha. */
+    /**
+     * Assemble matrix and right-hand side for the level set @p alpha.
+     * @p curvature: nodal kappa on the level set's DoFs (ghosted), used by
+     * the csf_curvature form only (may be empty otherwise).
+     * @p surface_time_step: dt of the semi-implicit Laplace-Beltrami term;
+     * 0 leaves the surface tension explicit.
+     */
     void
-    assemble(const LevelSetField<dim> &alpha);
+    assemble(const LevelSetField<dim>            &alpha,
+             const TrilinosWrappers::MPI::Vector &curvature,
+             const double                         surface_time_step);
 
     /** Solve; returns the number of outer iterations (0: direct). */
     unsigned int
@@ -106,9 +129,11 @@ namespace levelsinter
     pin_rigid_body_modes();
     template <typename MatrixType, typename VectorType>
     void
-    assemble_into(const LevelSetField<dim> &alpha,
-                  MatrixType               &matrix,
-                  VectorType               &rhs);
+    assemble_into(const LevelSetField<dim>            &alpha,
+                  const TrilinosWrappers::MPI::Vector &curvature,
+                  const double                         surface_time_step,
+                  MatrixType                          &matrix,
+                  VectorType                          &rhs);
 
     Settings                  settings;
     const PhaseLaw           &phase_law;

@@ -48,6 +48,15 @@ namespace levelsinter
       return std::numeric_limits<double>::infinity();
     }
 
+    /**
+     * Called after the transport of a step with the new level set: throw
+     * (std::runtime_error, saying why) to reject the step; the time loop
+     * then retries it from the old state with half the step.
+     */
+    virtual void
+    check_step(const LevelSetField<dim> &)
+    {}
+
     /** Extra metrics.csv columns and their values after the last step. */
     virtual std::vector<std::string>
     metric_names() const

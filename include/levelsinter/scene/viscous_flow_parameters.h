@@ -26,7 +26,8 @@ namespace levelsinter
     double      solid_viscosity       = 1;
     double      fluid_viscosity       = 1e-3;
     double      fluid_compressibility = 1;
-    std::string surface_tension_form; // csf or sharp
+    std::string surface_tension_form; // csf, sharp or csf-curvature
+    bool        semi_implicit_surface_tension = false;
     double      interface_half_width  = 1.5; // in finest cells
     double      stabilisation_constant = 0.1;
     double      external_pressure      = 0;

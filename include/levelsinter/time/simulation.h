@@ -42,6 +42,7 @@ namespace levelsinter
       unsigned int max_cells            = 0;
       unsigned int max_dofs             = 0;
       double       mean_iterations      = 0;
+      unsigned int rejected_steps       = 0; // retried with a smaller dt
       double       initial_solid_volume = 0;
     };
 
