@@ -223,7 +223,13 @@ namespace levelsinter
                 c1[d] = particles[0][d];
                 c2[d] = particles[1][d];
               }
-            row.push_back(interface_measures::neck_radius(alpha, c1, c2));
+            // Equal particles neck on the mid-plane (by symmetry, and
+            // exactly on symmetric meshes); unequal ones on their narrowest
+            // cross-section, which a search finds.
+            row.push_back(
+              particles[0][dim] == particles[1][dim] ?
+                interface_measures::neck_radius(alpha, c1, c2) :
+                interface_measures::narrowest_neck(alpha, c1, c2).radius);
           }
         const bool has_neck = row.size() > 11;
         for (const auto &mechanism : mechanisms)
