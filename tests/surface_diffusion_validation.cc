@@ -44,6 +44,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <limits>
 
 using namespace levelsinter;
 
@@ -380,8 +381,11 @@ namespace
           }
       const Line line = least_squares(x, y);
       if (study::is_root())
-        std::cout << "fit " << name << " (" << line.points
-                  << " samples, " << lo << " <= x/Rbar <= " << hi
+        std::cout << "fit " << name << " (" << line.points << " samples, "
+                  << lo << " <= x/Rbar"
+                  << (hi < std::numeric_limits<double>::max() ?
+                        " <= " + std::to_string(hi) :
+                        std::string())
                   << "): x/Rbar = " << std::exp(line.intercept)
                   << " t*^(1/" << 1 / line.slope << ")\n";
       return line;

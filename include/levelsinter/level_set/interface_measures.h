@@ -85,13 +85,12 @@ namespace levelsinter
 
     /**
      * The neck of unequal particles is not on the mid-plane: it is the
-     * narrowest cross-section between the centres. Its radius (measured as
-     * in neck_radius()) and its position s on c1 + s (c2 - c1).
+     * narrowest cross-section between the centres.
      */
     struct Neck
     {
-      double radius   = 0;
-      double position = 0.5;
+      double radius   = 0;   // measured as in neck_radius()
+      double position = 0.5; // s on c1 + s (c2 - c1)
     };
 
     template <int dim>
