@@ -177,34 +177,12 @@ namespace levelsinter::interface_measures
   }
 
   template <int dim>
-  double
-  neck_radius(const LevelSetField<dim> &level_set,
-              const Point<dim>         &c1,
-              const Point<dim>         &c2)
+  std::vector<double>
+  exit_distances(const LevelSetField<dim>          &level_set,
+                 const Point<dim>                  &origin,
+                 const std::vector<Tensor<1, dim>> &directions)
   {
-    const Point<dim>     middle = c1 + 0.5 * (c2 - c1);
-    const Tensor<1, dim> axis   = (c2 - c1) / (c2 - c1).norm();
-
-    // Unit directions in the mid-plane.
-    std::vector<Tensor<1, dim>> directions;
-    if constexpr (dim == 2)
-      {
-        const Tensor<1, dim> t({-axis[1], axis[0]});
-        directions = {t, -t};
-      }
-    else
-      {
-        Tensor<1, dim> helper;
-        helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
-        Tensor<1, dim> u = cross_product_3d(axis, helper);
-        u /= u.norm();
-        const Tensor<1, dim> w = cross_product_3d(axis, u);
-        for (unsigned int k = 0; k < 8; ++k)
-          directions.push_back(std::cos(k * M_PI / 4) * u +
-                               std::sin(k * M_PI / 4) * w);
-      }
-
-    constexpr double infinity = std::numeric_limits<double>::max();
+    constexpr double infinity = std::numeric_limits<double>::infinity();
     // Per ray: first crossing from solid to pore, and from pore to solid.
     std::vector<double> leaving(directions.size(), infinity);
     std::vector<double> entering(directions.size(), infinity);
@@ -226,13 +204,13 @@ namespace levelsinter::interface_measures
                   const double hi = box.get_boundary_points().second[d];
                   if (std::abs(directions[r][d]) < 1e-14)
                     {
-                      if (middle[d] < lo || middle[d] > hi)
+                      if (origin[d] < lo || origin[d] > hi)
                         s1 = -1;
                     }
                   else
                     {
-                      double a = (lo - middle[d]) / directions[r][d];
-                      double b = (hi - middle[d]) / directions[r][d];
+                      double a = (lo - origin[d]) / directions[r][d];
+                      double b = (hi - origin[d]) / directions[r][d];
                       if (a > b)
                         std::swap(a, b);
                       s0 = std::max(s0, a);
@@ -254,7 +232,7 @@ namespace levelsinter::interface_measures
                 return value_in_cell<dim>(level_set,
                                           cell,
                                           indices,
-                                          middle + s * directions[r]);
+                                          origin + s * directions[r]);
               };
               double a_prev = at(s0);
               for (unsigned int k = 1; k <= n_sub; ++k)
@@ -288,17 +266,112 @@ namespace levelsinter::interface_measures
     const MPI_Comm comm = dofs.get_communicator();
     Utilities::MPI::min(leaving, comm, leaving);
     Utilities::MPI::min(entering, comm, entering);
-    double       sum     = 0;
-    unsigned int n_valid = 0;
     for (unsigned int r = 0; r < directions.size(); ++r)
-      {
-        if (leaving[r] == infinity && entering[r] == infinity)
-          continue; // the ray left the domain: a symmetry plane
-        ++n_valid;
-        if (leaving[r] < entering[r])
-          sum += leaving[r];
-      }
-    return n_valid ? sum / n_valid : 0.;
+      if (entering[r] < leaving[r])
+        leaving[r] = 0; // the origin lies in the pore
+    return leaving;
+  }
+
+  namespace
+  {
+    // Mean exit distance from the point c1 + s (c2 - c1) over rays in the
+    // plane through it normal to c2 - c1 (2 rays in 2D, 8 in 3D). Rays that
+    // leave the domain before meeting the interface (symmetry planes) are
+    // skipped.
+    template <int dim>
+    double
+    cross_section_radius(const LevelSetField<dim> &level_set,
+                         const Point<dim>         &c1,
+                         const Point<dim>         &c2,
+                         const double              s)
+    {
+      const Tensor<1, dim> axis = (c2 - c1) / (c2 - c1).norm();
+      std::vector<Tensor<1, dim>> directions;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> t({-axis[1], axis[0]});
+          directions = {t, -t};
+        }
+      else
+        {
+          Tensor<1, dim> helper;
+          helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
+          Tensor<1, dim> u = cross_product_3d(axis, helper);
+          u /= u.norm();
+          const Tensor<1, dim> w = cross_product_3d(axis, u);
+          for (unsigned int k = 0; k < 8; ++k)
+            directions.push_back(std::cos(k * M_PI / 4) * u +
+                                 std::sin(k * M_PI / 4) * w);
+        }
+      double       sum     = 0;
+      unsigned int n_valid = 0;
+      for (const double d :
+           exit_distances(level_set, c1 + s * (c2 - c1), directions))
+        if (std::isfinite(d))
+          {
+            sum += d;
+            ++n_valid;
+          }
+      return n_valid ? sum / n_valid : 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  double
+  neck_radius(const LevelSetField<dim> &level_set,
+              const Point<dim>         &c1,
+              const Point<dim>         &c2)
+  {
+    return cross_section_radius(level_set, c1, c2, 0.5);
+  }
+
+  template <int dim>
+  Neck
+  narrowest_neck(const LevelSetField<dim> &level_set,
+                 const Point<dim>         &c1,
+                 const Point<dim>         &c2)
+  {
+    // The cross-section radius falls from the first centre to the neck and
+    // rises again to the second: a scan brackets the minimum, a golden-
+    // section search narrows the bracket to 1e-4 of the centre distance
+    // (the radius is flat there, so its error is of second order).
+    auto         radius  = [&](const double s) {
+      return cross_section_radius(level_set, c1, c2, s);
+    };
+    const unsigned int n_scan = 16;
+    unsigned int       best   = 1;
+    double             r_best = radius(1. / n_scan);
+    for (unsigned int k = 2; k < n_scan; ++k)
+      if (const double r = radius(double(k) / n_scan); r < r_best)
+        {
+          r_best = r;
+          best   = k;
+        }
+    const double golden = (std::sqrt(5.) - 1) / 2;
+    double       a = double(best - 1) / n_scan, b = double(best + 1) / n_scan;
+    double       x1 = b - golden * (b - a), x2 = a + golden * (b - a);
+    double       f1 = radius(x1), f2 = radius(x2);
+    while (b - a > 1e-4)
+      if (f1 < f2)
+        {
+          b  = x2;
+          x2 = x1;
+          f2 = f1;
+          x1 = b - golden * (b - a);
+          f1 = radius(x1);
+        }
+      else
+        {
+          a  = x1;
+          x1 = x2;
+          f1 = f2;
+          x2 = a + golden * (b - a);
+          f2 = radius(x2);
+        }
+    Neck neck;
+    neck.position = f1 < f2 ? x1 : x2;
+    neck.radius   = std::min({f1, f2, r_best});
+    return neck;
   }
 
   template <int dim>
@@ -375,7 +448,13 @@ namespace levelsinter::interface_measures
             }
           if (particles.size() == 2 ||
               c1.distance(c2) < particles[i][dim] + particles[j][dim])
-            neck = std::fmin(neck, neck_radius(level_set, c1, c2));
+            // Equal particles neck on the mid-plane (by symmetry, and
+            // exactly on symmetric meshes); unequal ones on their narrowest
+            // cross-section, which a search finds.
+            neck = std::fmin(neck,
+                             particles[i][dim] == particles[j][dim] ?
+                               neck_radius(level_set, c1, c2) :
+                               narrowest_neck(level_set, c1, c2).radius);
         }
     return neck;
   }
@@ -390,6 +469,18 @@ namespace levelsinter::interface_measures
   template double
   smallest_neck_radius(const LevelSetField<3> &,
                        const std::vector<std::vector<double>> &);
+  template Neck
+  narrowest_neck(const LevelSetField<2> &, const Point<2> &, const Point<2> &);
+  template Neck
+  narrowest_neck(const LevelSetField<3> &, const Point<3> &, const Point<3> &);
+  template std::vector<double>
+  exit_distances(const LevelSetField<2> &,
+                 const Point<2> &,
+                 const std::vector<Tensor<1, 2>> &);
+  template std::vector<double>
+  exit_distances(const LevelSetField<3> &,
+                 const Point<3> &,
+                 const std::vector<Tensor<1, 3>> &);
   template GradientNormError
   gradient_norm_error(const LevelSetField<2> &, const LevelSetFilter &);
   template GradientNormError
