@@ -28,6 +28,9 @@ LABELS = {
     "shape_error": "shape error (mean distance)",
     "rate_error": "|relative decay-rate error|",
     "volume_change": "|relative area change|",
+    "max_neck_error": "max relative neck-radius error",
+    "final_neck_error": "final relative neck-radius error",
+    "area_drift": "|solid-area drift|",
 }
 
 args = sys.argv[1:]
