@@ -326,7 +326,7 @@ namespace
       // across the axis through that centre is r - O(delta^2), so
       // delta = half-width - far-end distance, whatever r became (a
       // uniform v^c grows r). Both points are away from the neck.
-      auto centre_shift = [&](const Point<2> &c, const double sign) {
+      auto centre_shift = [&](const Point<dim> &c, const double sign) {
         const auto exits = interface_measures::exit_distances(
           alpha, c, {-sign * axis, across, -across});
         return 0.5 * (exits[1] + exits[2]) - exits[0];
@@ -390,7 +390,6 @@ namespace
                         std::string())
                   << "): x/Rbar = " << std::exp(line.intercept)
                   << " t*^(1/" << 1 / line.slope << ")\n";
-      return line;
     };
     fit(fit_min, fit_max, "window");
     fit(fit_min, std::numeric_limits<double>::max(), "all");
