@@ -30,6 +30,7 @@
 // overrides for every run). Exit code 0 only if every check passes.
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
 #include <levelsinter/level_set/interface_measures.h>
@@ -40,7 +41,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -310,8 +310,8 @@ namespace
                        options.csv);
     Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
     simulation.initialise();
-    const std::clock_t cpu_start = std::clock();
-    double             volume0 = 0, approach0 = 0;
+    const Timer cpu_timer(MPI_COMM_WORLD); // CPU summed over the ranks
+    double      volume0 = 0, approach0 = 0;
     std::vector<double> log_t, log_x, x_over_r;
     unsigned int        last_sample = 0;
     auto sample = [&](const unsigned int step, const double t,
@@ -353,9 +353,7 @@ namespace
                  neck.position,
                  (volume - volume0) / volume0,
                  -(approach - approach0) / d0,
-                 Utilities::MPI::sum(double(std::clock() - cpu_start) /
-                                       CLOCKS_PER_SEC,
-                                     MPI_COMM_WORLD)});
+                 cpu_timer.cpu_time()});
     };
     sample(0, 0, simulation.level_set());
     const double x0 = table.finest("neck");

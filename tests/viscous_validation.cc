@@ -27,6 +27,7 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -47,7 +48,6 @@
 #include <chrono>
 #include <cmath>
 #include <complex>
-#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -276,10 +276,9 @@ namespace
             flow.prescribe_curvature(
               std::make_shared<Functions::ConstantFunction<dim>>(1 / R));
           flow.setup(alpha);
-          const std::clock_t start = std::clock();
+          const Timer cpu_timer(MPI_COMM_WORLD); // CPU summed over the ranks
           flow.add_velocity(alpha, 0, 0, velocity);
-          const double cpu_time = Utilities::MPI::sum(
-            double(std::clock() - start) / CLOCKS_PER_SEC, MPI_COMM_WORLD);
+          const double cpu_time = cpu_timer.cpu_time();
           const auto   p     = mean_pressures(flow.stokes(), alpha);
           const double gamma = scene.viscous_flow.surface_tension;
           const double eta   = scene.viscous_flow.solid_viscosity;
@@ -851,25 +850,17 @@ namespace
     Table table(run_columns({"roundness_error", "area_drift"}), options.csv);
     for (const unsigned int level : levels)
       {
-        interface_measures::VolumeAndArea end;
-        const auto                        run = run_level<dim>(
-          scene_file,
-          level,
-          options,
-          "coalescence",
-          [&](Simulation<dim> &simulation, const SceneParameters &) {
-            simulation.set_step_observer(
-              [&](unsigned int, double, const LevelSetField<dim> &alpha) {
-                end = interface_measures::volume_and_area(alpha);
-              });
-          });
+        const auto run = run_level<dim>(
+          scene_file, level, options, "coalescence", [](auto &, auto &) {});
+        const double area   = run.metrics.at("solid_volume").back();
+        const double length = run.metrics.at("interface_area").back();
         const double parts =
           std::pow(2., run.scene.viscous_flow.symmetry_boundaries.size());
-        const double radius = std::sqrt(parts * end.solid_volume / M_PI);
+        const double radius = std::sqrt(parts * area / M_PI);
         table.add(run_row(
           level,
           run,
-          {end.interface_area / (2 * M_PI * radius / parts) - 1,
+          {length / (2 * M_PI * radius / parts) - 1,
            std::abs(run.metrics.at("volume_change").back())}));
       }
     check("finest interface length / that of the round shape - 1",

@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/dofs/dof_tools.h>
 
@@ -17,7 +18,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <ctime>
 #include <stdexcept>
 
 namespace levelsinter
@@ -352,17 +352,16 @@ namespace levelsinter
   {
     assemble(level_set, coefficient, dt, previous_velocity);
     TimerOutput::Scope scope(timer, "curvature solve");
-    const std::clock_t cpu_start  = std::clock();
-    unsigned int       iterations = 0;
+    // CPU time summed over the ranks (deal.II's Timer with a communicator).
+    Timer        cpu_timer(level_set.dof_handler().get_communicator());
+    unsigned int iterations = 0;
     if (settings.coupled && dt > 0 && settings.direct)
       iterations = solve_direct(level_set, std::sqrt(coefficient / dt));
     else if (settings.coupled && dt > 0)
       iterations = solve_coupled(level_set, std::sqrt(coefficient / dt));
     else
       iterations = solve_decoupled(level_set);
-    solve_cpu_time =
-      Utilities::MPI::sum(double(std::clock() - cpu_start) / CLOCKS_PER_SEC,
-                          level_set.dof_handler().get_communicator());
+    solve_cpu_time = cpu_timer.cpu_time();
     return iterations;
   }
 

@@ -72,16 +72,10 @@ namespace levelsinter
 
     // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
     // vertices; the velocity space numbers them its own way.
-    const auto &ls_dofs = alpha.dof_handler();
     const auto &normals = solver.nodal_normals();
     const auto &v_s     = solver.normal_velocity();
-    velocity.add_vertex_values([&](const auto &velocity_cell,
-                                   const unsigned int v) {
-      const typename DoFHandler<dim>::active_cell_iterator cell(
-        &velocity_cell->get_triangulation(),
-        velocity_cell->level(),
-        velocity_cell->index(),
-        &ls_dofs);
+    velocity.add_vertex_values(alpha.dof_handler(),
+                               [&](const auto &cell, const unsigned int v) {
       const auto     i = cell->vertex_dof_index(v, 0);
       Tensor<1, dim> value;
       for (unsigned int c = 0; c < dim; ++c)

@@ -66,6 +66,7 @@ namespace levelsinter
   template <int dim>
   void
   VelocityField<dim>::add_vertex_values(
+    const DoFHandler<dim> &source_dofs,
     const std::function<
       Tensor<1, dim>(const typename DoFHandler<dim>::active_cell_iterator &,
                      const unsigned int)> &vertex_value)
@@ -75,7 +76,12 @@ namespace levelsinter
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           {
-            const Tensor<1, dim> value = vertex_value(cell, v);
+            const typename DoFHandler<dim>::active_cell_iterator source_cell(
+              &cell->get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &source_dofs);
+            const Tensor<1, dim> value = vertex_value(source_cell, v);
             for (unsigned int c = 0; c < dim; ++c)
               {
                 const auto index = cell->vertex_dof_index(v, c);

@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -8,7 +9,6 @@
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
-#include <ctime>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -33,6 +33,8 @@ namespace levelsinter
   {
     const auto &tria = alpha.dof_handler().get_triangulation();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    area_after_step = 0;
+    step_start_time = -1;
     typename TwoPhaseStokes<dim>::Settings settings;
     settings.surface_tension = parameters.surface_tension;
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
@@ -105,14 +107,20 @@ namespace levelsinter
   template <int dim>
   void
   ViscousFlow<dim>::add_velocity(const LevelSetField<dim> &alpha,
-                                 const double,
+                                 const double        t,
                                  const double        dt,
                                  VelocityField<dim> &velocity)
   {
     if (dt > 0 && parameters.surface_tension > 0 &&
-        parameters.external_pressure == 0)
-      area_at_step_start =
-        interface_measures::volume_and_area(alpha).interface_area;
+        parameters.external_pressure == 0 && t != step_start_time)
+      {
+        area_at_step_start =
+          area_after_step > 0 ?
+            area_after_step :
+            interface_measures::volume_and_area(alpha).interface_area;
+        area_after_step = 0;
+        step_start_time = t;
+      }
     if (kappa.size() > 0)
       {
         TimerOutput::Scope scope(timer, "viscous flow: curvature");
@@ -126,25 +134,17 @@ namespace levelsinter
     }
     {
       TimerOutput::Scope scope(timer, "viscous flow: solve");
-      const std::clock_t start = std::clock();
-      last_iterations          = operator_->solve();
-      last_solve_cpu           = Utilities::MPI::sum(
-        double(std::clock() - start) / CLOCKS_PER_SEC,
-        alpha.dof_handler().get_communicator());
+      Timer cpu_timer(alpha.dof_handler().get_communicator());
+      last_iterations = operator_->solve();
+      last_solve_cpu  = cpu_timer.cpu_time(); // summed over the ranks
     }
 
     // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by
     // vertex (the first dim vertex DoFs of the Stokes element are the
     // velocity components).
-    const auto &stokes_dofs = operator_->dof_handler();
-    const auto &solution    = operator_->solution();
-    velocity.add_vertex_values([&](const auto &velocity_cell,
-                                   const unsigned int v) {
-      const typename DoFHandler<dim>::active_cell_iterator cell(
-        &velocity_cell->get_triangulation(),
-        velocity_cell->level(),
-        velocity_cell->index(),
-        &stokes_dofs);
+    const auto &solution = operator_->solution();
+    velocity.add_vertex_values(operator_->dof_handler(),
+                               [&](const auto &cell, const unsigned int v) {
       Tensor<1, dim> value;
       for (unsigned int c = 0; c < dim; ++c)
         value[c] = solution(cell->vertex_dof_index(v, c));
@@ -176,6 +176,7 @@ namespace levelsinter
                 << "semi-implicit')";
         throw std::runtime_error(message.str());
       }
+    area_after_step = area;
   }
 
   template <int dim>

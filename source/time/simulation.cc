@@ -1,5 +1,6 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
 #include <deal.II/grid/grid_tools.h>
@@ -9,7 +10,6 @@
 #include <levelsinter/time/simulation.h>
 
 #include <cmath>
-#include <ctime>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -337,7 +337,9 @@ namespace levelsinter
   Simulation<dim>::run()
   {
     start                  = std::chrono::steady_clock::now();
-    const std::clock_t cpu_start = std::clock();
+    // CPU time summed over the ranks: unlike the wall time it does not grow
+    // when other jobs share the cores.
+    const Timer cpu_timer(comm);
     if (!initialised)
       initialise();
 
@@ -381,10 +383,7 @@ namespace levelsinter
     summary.wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
-    // CPU time of this process summed over the ranks: unlike the wall time
-    // it does not grow when other jobs share the cores.
-    summary.cpu_time = Utilities::MPI::sum(
-      double(std::clock() - cpu_start) / CLOCKS_PER_SEC, comm);
+    summary.cpu_time = cpu_timer.cpu_time();
     summary.mean_iterations = step > 0 ? double(total_iterations) / step : 0;
     return summary;
   }

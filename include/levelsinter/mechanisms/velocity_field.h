@@ -53,11 +53,14 @@ namespace levelsinter
 
     /**
      * v += the vector vertex_value(cell, v) at vertex v of every locally
-     * owned cell (a cell of dof_handler()): how a mechanism that computes a
-     * nodal velocity on its own Q1 space on the same mesh hands it over.
+     * owned cell, where cell is the same mesh cell seen from
+     * @p source_dofs: how a mechanism that computes a nodal velocity on its
+     * own space on the same mesh hands it over (it reads its vertex DoFs on
+     * that cell).
      */
     void
     add_vertex_values(
+      const DoFHandler<dim> &source_dofs,
       const std::function<
         Tensor<1, dim>(const typename DoFHandler<dim>::active_cell_iterator &,
                        const unsigned int)> &vertex_value);
