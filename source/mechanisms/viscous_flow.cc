@@ -33,7 +33,6 @@ namespace levelsinter
   {
     const auto &tria = alpha.dof_handler().get_triangulation();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
-    area_after_step = 0;
     step_start_time = -1;
     typename TwoPhaseStokes<dim>::Settings settings;
     settings.surface_tension = parameters.surface_tension;
@@ -115,10 +114,7 @@ namespace levelsinter
         parameters.external_pressure == 0 && t != step_start_time)
       {
         area_at_step_start =
-          area_after_step > 0 ?
-            area_after_step :
-            interface_measures::volume_and_area(alpha).interface_area;
-        area_after_step = 0;
+          interface_measures::volume_and_area(alpha).interface_area;
         step_start_time = t;
       }
     if (kappa.size() > 0)
@@ -176,7 +172,6 @@ namespace levelsinter
                 << "semi-implicit')";
         throw std::runtime_error(message.str());
       }
-    area_after_step = area;
   }
 
   template <int dim>
