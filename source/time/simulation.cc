@@ -167,7 +167,11 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       any = mechanism->add_correction_velocity(alpha, dt, correction_velocity) ||
             any;
-    return any ? transport.advance(alpha, correction_velocity, dt) : 0;
+    return any ? transport.advance(alpha,
+                                   correction_velocity,
+                                   dt,
+                                   /*reinitialise=*/false) :
+                 0;
   }
 
   template <int dim>
