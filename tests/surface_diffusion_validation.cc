@@ -177,7 +177,7 @@ namespace
             "validation_output/sd_" + std::to_string(dim) + "d_n" +
             std::to_string(mode) + "_l" + std::to_string(level) + "_s" +
             std::to_string(steps) +
-            (base.surface_diffusion.volume_correction ? "_vc" : "");
+            (base.volume_correction ? "_vc" : "");
           std::filesystem::create_directories(output);
           auto overrides = options.overrides;
           overrides.insert(

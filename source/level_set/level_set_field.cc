@@ -34,6 +34,7 @@ namespace levelsinter
     ghosted_alpha.reinit(owned_dofs,
                          relevant_dofs,
                          dofs.get_communicator());
+    state = 0;
   }
 
   template <int dim>
@@ -64,6 +65,9 @@ namespace levelsinter
   {
     hanging_node_constraints.distribute(owned);
     ghosted_alpha = owned;
+    // Every rank sets alpha in the same order, so the ids agree.
+    static std::uint64_t last_state = 0;
+    state                           = ++last_state;
   }
 
   template <int dim>

@@ -2,6 +2,7 @@
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
 #include <levelsinter/mechanisms/surface_diffusion.h>
+#include <levelsinter/mechanisms/volume_correction.h>
 
 namespace levelsinter
 {
@@ -21,6 +22,9 @@ namespace levelsinter
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));
+    // Last: it corrects the volume whatever the others moved.
+    if (scene.volume_correction)
+      mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(filter));
     return mechanisms;
   }
 

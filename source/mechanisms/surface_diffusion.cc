@@ -1,4 +1,3 @@
-#include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/mechanisms/surface_diffusion.h>
 
 #include <cmath>
@@ -22,7 +21,6 @@ namespace levelsinter
     const LevelSetFilter                    &filter,
     TimerOutput                             &timer)
     : mobility(coefficient_in_scene_time(parameters))
-    , volume_correction(parameters.volume_correction)
     , solver(filter,
              {parameters.coupled,
               parameters.linear_solver == "direct",
@@ -56,20 +54,6 @@ namespace levelsinter
     solved_time = t;
 
     TimerOutput::Scope scope(timer, "surface diffusion velocity");
-    // Eq. 113-116: a uniform normal speed that gives back, over this step,
-    // the solid volume lost or gained since t = 0 (by the scheme and by the
-    // reinitialisation alike).
-    correction_speed = 0;
-    if (volume_correction)
-      {
-        const auto measures = interface_measures::volume_and_area(alpha);
-        if (initial_volume < 0)
-          initial_volume = measures.solid_volume;
-        if (dt > 0 && measures.interface_area > 0)
-          correction_speed = (initial_volume - measures.solid_volume) /
-                             (dt * measures.interface_area);
-      }
-
     // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
     // vertices; the velocity space numbers them its own way.
     const auto &normals = solver.nodal_normals();
@@ -79,7 +63,7 @@ namespace levelsinter
       const auto     i = cell->vertex_dof_index(v, 0);
       Tensor<1, dim> value;
       for (unsigned int c = 0; c < dim; ++c)
-        value[c] = (v_s(i) + correction_speed) * normals[c](i);
+        value[c] = v_s(i) * normals[c](i);
       return value;
     });
   }
@@ -89,15 +73,14 @@ namespace levelsinter
   SurfaceDiffusion<dim>::metric_names() const
   {
     return {"surface_diffusion_iterations",
-            "surface_diffusion_solve_cpu_time",
-            "volume_correction_speed"};
+            "surface_diffusion_solve_cpu_time"};
   }
 
   template <int dim>
   std::vector<double>
   SurfaceDiffusion<dim>::metric_values() const
   {
-    return {double(iterations), solver.solve_cpu_time, correction_speed};
+    return {double(iterations), solver.solve_cpu_time};
   }
 
   template class SurfaceDiffusion<2>;

@@ -314,12 +314,6 @@ namespace levelsinter
                         "1e-8",
                         Patterns::Double(0),
                         "Relative residual of the kappa / v_s solve (gmres).");
-      prm.declare_entry("Volume correction",
-                        "false",
-                        Patterns::Bool(),
-                        "Add the uniform normal speed v^c of Eq. 113-116 "
-                        "that restores, over each step, the solid volume of "
-                        "t = 0.");
       prm.declare_entry("Linear solver",
                         "gmres",
                         Patterns::Selection("direct|gmres"),
@@ -329,6 +323,19 @@ namespace levelsinter
                         "runs in parallel; direct: KLU (Trilinos Amesos) on "
                         "the coupled system, serial factorisation, for small "
                         "2D checks (doc/numerics.md).");
+    }
+    prm.leave_subsection();
+
+    prm.enter_subsection("Volume correction");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Add to the velocity of the other mechanisms the "
+                        "uniform normal speed v^c of Eq. 113-116 that gives "
+                        "back, over each step, the solid volume gained or "
+                        "lost since t = 0 (by the scheme, the transport and "
+                        "the remeshing alike).");
     }
     prm.leave_subsection();
 
@@ -492,7 +499,6 @@ namespace levelsinter
     surface_diffusion.coupled          = prm.get_bool("Coupled");
     surface_diffusion.solver_tolerance = prm.get_double("Solver tolerance");
     surface_diffusion.linear_solver    = prm.get("Linear solver");
-    surface_diffusion.volume_correction = prm.get_bool("Volume correction");
     if (surface_diffusion.enabled)
       {
         if (surface_diffusion.coefficient == 0 &&
@@ -577,6 +583,10 @@ namespace levelsinter
                " so that the interface cannot leave the refined band "
                "between two adaptations");
     }
+
+    prm.enter_subsection("Volume correction");
+    volume_correction = prm.get_bool("Enabled");
+    prm.leave_subsection();
 
     prm.enter_subsection("Output");
     output.directory         = prm.get("Directory");

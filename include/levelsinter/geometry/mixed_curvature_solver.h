@@ -53,10 +53,9 @@ namespace levelsinter
       bool         direct         = false;
       double       tolerance      = 1e-8;
       unsigned int max_iterations = 500;
-      // Nodal normals (Eq. 84) from the gradient of the interpolated
-      // distance d = filter^-1(alpha) rather than of alpha: kappa then
-      // converges at second order with E a fixed number of cells
-      // (doc/numerics.md, "Surface-tension forms").
+      // Nodal normals (Eq. 84) from the interpolated distance rather than
+      // alpha (nodal_normals()): kappa then converges at second order with
+      // E a fixed number of cells.
       bool normals_from_distance = false;
     };
 
@@ -104,9 +103,6 @@ namespace levelsinter
     bool
     in_band(const LevelSetField<dim>                             &level_set,
             const typename DoFHandler<dim>::active_cell_iterator &cell) const;
-
-    void
-    compute_normals(const LevelSetField<dim> &level_set);
 
     void
     assemble(const LevelSetField<dim> &level_set,

@@ -31,10 +31,6 @@ namespace levelsinter
     volume_and_area(const LevelSetField<dim> &level_set);
 
     /**
-     * The integral over {alpha_h = 0} of f(x, n), n the unit normal pointing
-     * out of the solid (e.g. Fourier modes of a perturbed circle).
-     */
-    /**
      * Volume (area in 2D) of the atmosphere {alpha_h > 0} in the cells whose
      * centre lies in @p window: with a window that holds a closed pore and
      * solid around it, the pore's volume.
@@ -44,6 +40,10 @@ namespace levelsinter
     atmosphere_volume(const LevelSetField<dim> &level_set,
                       const BoundingBox<dim>   &window);
 
+    /**
+     * The integral over {alpha_h = 0} of f(x, n), n the unit normal pointing
+     * out of the solid (e.g. Fourier modes of a perturbed circle).
+     */
     template <int dim>
     double
     interface_integral(

@@ -12,6 +12,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <cstdint>
 #include <memory>
 
 namespace dealii::parallel::distributed
@@ -104,6 +105,17 @@ namespace levelsinter
       return finite_element;
     }
 
+    /**
+     * A number that identifies the current values of alpha among all
+     * states of all level-set fields of the run: a measurement of one
+     * state (interface_measures::volume_and_area) is taken once and reused.
+     */
+    std::uint64_t
+    state_id() const
+    {
+      return state;
+    }
+
   private:
     FE_Q<dim>                 finite_element;
     DoFHandler<dim>           dofs;
@@ -111,6 +123,7 @@ namespace levelsinter
     IndexSet                  owned_dofs;
     IndexSet                  relevant_dofs;
     Vector                    ghosted_alpha;
+    std::uint64_t             state = 0;
     std::unique_ptr<
       parallel::distributed::SolutionTransfer<dim, Vector, dim>>
       transfer;

@@ -54,9 +54,6 @@ namespace levelsinter
 
   private:
     const double              mobility;
-    const bool                volume_correction;
-    double                    initial_volume   = -1;
-    double                    correction_speed = 0;
     MixedCurvatureSolver<dim> solver;
     TimerOutput              &timer;
     // v_s^{n-1} for A^n (Eq. 81), and the time of the last solve: the time

@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <levelsinter/geometry/mixed_curvature_solver.h>
+#include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <levelsinter/mechanics/phase_law.h>
@@ -109,12 +110,9 @@ namespace levelsinter
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;
     double                               h_min           = 0;
-    // Interface measure at the start of the step from step_start_time, and
-    // after the last step check_step() accepted (0: unknown, e.g. after a
-    // remesh): an accepted step's end is the next step's start, so the cut
-    // integral is taken once per step, not again for the CFL re-choice or a
-    // retry.
-    double area_at_step_start = 0, area_after_step = 0;
+    // Interface measure at the start of the step from step_start_time, kept
+    // for the CFL re-choice and the retries of that step.
+    interface_measures::VolumeAndArea measures_at_step_start;
     double step_start_time    = -1;
     unsigned int                         last_iterations = 0;
     // CPU seconds of the last solve (preconditioner setup included),

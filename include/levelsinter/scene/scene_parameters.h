@@ -111,12 +111,14 @@ namespace levelsinter
       bool        coupled          = true;      // mixed (Eq. 82) or decoupled
       double      solver_tolerance = 1e-8;
       std::string linear_solver    = "direct"; // or "gmres"
-      bool        volume_correction = false;   // v^c, Eq. 113-116
 
       /** C_s = D_s delta_s gamma_sf Omega / kT, or the given coefficient. */
       double
       surface_mobility() const;
     } surface_diffusion;
+
+    // v^c (Eq. 113-116), a mechanism of its own on top of the others.
+    bool volume_correction = false;
 
     struct Output
     {

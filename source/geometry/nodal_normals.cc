@@ -1,0 +1,85 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/geometry/nodal_normals.h>
+
+#include <cmath>
+
+namespace levelsinter
+{
+  template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, dim>
+  nodal_normals(const LevelSetField<dim> &level_set,
+                const LevelSetFilter     &filter,
+                const bool                from_distance)
+  {
+    using Vector        = TrilinosWrappers::MPI::Vector;
+    const auto    &dofs = level_set.dof_handler();
+    const MPI_Comm comm = dofs.get_communicator();
+    std::array<Vector, dim> sums;
+    for (auto &sum : sums)
+      sum.reinit(level_set.locally_owned(),
+                 level_set.locally_relevant(),
+                 comm,
+                 true);
+    const QMidpoint<dim> centre;
+    FEValues<dim>  fe_values(level_set.fe(), centre, update_gradients);
+    std::vector<Tensor<1, dim>> gradient(1);
+    dealii::Vector<double>      local_alpha(level_set.fe().dofs_per_cell);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          if (from_distance)
+            {
+              cell->get_dof_values(level_set.alpha(), local_alpha);
+              gradient[0] = 0;
+              for (unsigned int i = 0; i < local_alpha.size(); ++i)
+                gradient[0] += filter.distance(local_alpha[i]) *
+                               fe_values.shape_grad(i, 0);
+            }
+          else
+            fe_values.get_function_gradients(level_set.alpha(), gradient);
+          const double norm = gradient[0].norm();
+          if (norm == 0)
+            continue;
+          for (const unsigned int v : cell->vertex_indices())
+            for (unsigned int c = 0; c < dim; ++c)
+              sums[c](cell->vertex_dof_index(v, 0)) += gradient[0][c] / norm;
+        }
+    for (auto &sum : sums)
+      sum.compress(VectorOperation::add);
+
+    std::array<Vector, dim> owned_normals;
+    for (unsigned int c = 0; c < dim; ++c)
+      owned_normals[c].reinit(level_set.locally_owned(), comm);
+    for (const auto i : level_set.locally_owned())
+      {
+        double norm2 = 0;
+        for (unsigned int c = 0; c < dim; ++c)
+          norm2 += sums[c](i) * sums[c](i);
+        if (norm2 > 0)
+          for (unsigned int c = 0; c < dim; ++c)
+            owned_normals[c](i) = sums[c](i) / std::sqrt(norm2);
+      }
+    std::array<Vector, dim> normals;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        owned_normals[c].compress(VectorOperation::insert);
+        level_set.constraints().distribute(owned_normals[c]);
+        normals[c].reinit(level_set.locally_owned(),
+                          level_set.locally_relevant(),
+                          comm);
+        normals[c] = owned_normals[c];
+      }
+    return normals;
+  }
+
+  template std::array<TrilinosWrappers::MPI::Vector, 2>
+  nodal_normals<2>(const LevelSetField<2> &, const LevelSetFilter &, bool);
+  template std::array<TrilinosWrappers::MPI::Vector, 3>
+  nodal_normals<3>(const LevelSetField<3> &, const LevelSetFilter &, bool);
+} // namespace levelsinter
