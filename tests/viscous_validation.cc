@@ -13,10 +13,10 @@
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C, --max-curvature-error,
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
-// --max-stokes-its, hopper: --max-rejected, --min-rejected,
-// --max-final-neck-error,
-// --min-fine-cells (cells above Maximum level after the first step),
-// --max-fine-cell-distance (the farthest of them from the neck, / R); spheres:
+// --max-stokes-its, hopper: --max-final-neck-error, --max-rejected,
+// --min-rejected, --min-fine-cells (cells above Maximum level after the
+// first step), --max-fine-cell-distance (the farthest of them from the
+// neck, / R); spheres:
 // --min-neck-growth, --max-volume-drift,
 // --min-early-slope, --max-early-slope, --max-final-radius-error; pore:
 // --pore-half-width W (required: a square window of half-width W around
@@ -759,14 +759,14 @@ namespace
       }
     check("finest max relative neck-radius error", table.finest("max_neck_error"),
           options, "max-neck-error");
+    check("finest final relative neck-radius error",
+          table.finest("final_neck_error"), options, "max-final-neck-error");
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
     check("finest rejected steps", table.finest("rejected"), options,
           "max-rejected");
     check("finest rejected steps", table.finest("rejected"), options,
           "min-rejected", false);
-    check("finest final relative neck-radius error",
-          table.finest("final_neck_error"), options, "max-final-neck-error");
     check("finest cells above the band level after step 1",
           table.finest("fine_cells_step1"), options, "min-fine-cells", false);
     check("finest largest distance of those cells from the neck / R",
