@@ -84,7 +84,7 @@ namespace levelsinter
       {
         alpha.setup_dofs();
         alpha.interpolate(filtered);
-        if (pass > scene.refinement.max_level - scene.refinement.min_level ||
+        if (pass > band_refinement.finest_level() - scene.refinement.min_level ||
             !band_refinement.mark_cells(tria, alpha))
           break;
         tria.execute_coarsening_and_refinement();
@@ -134,6 +134,8 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
+    // Curvature refinement makes the finest cells come and go with the necks.
+    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
   }
 
   template <int dim>
