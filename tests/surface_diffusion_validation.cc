@@ -9,22 +9,28 @@
 // in 3D (Mullins 1957). Every combination of LEVELS (maximum refinement
 // level) and STEPS (steps per e-folding time) is run to one e-folding time;
 // the amplitude is measured after every step from the discrete interface
-// and the rate fitted by least squares to log(amplitude). Settings: --mode
+// and the rate fitted by least squares to log|amplitude|. Settings: --mode
 // n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
-// v_s), --filter-thickness E (lower bound); limits --max-rate-error,
+// v_s), --filter-thickness E (lower bound), --signs 2 (each case with
+// +delta and -delta, rate = their mean); limits --max-rate-error,
 // --max-volume-change, checked on the last run.
 //
-// neck: SCENE has two grains R1, R2; it runs STEPS steps (or to its end
-// time) and samples every --sample-interval steps (10) the neck x on the
-// narrowest cross-section between the centres, x / Rbar with Rbar =
-// 2 R1 R2 / (R1 + R2) (paper Fig. 27), t* = C_s t / Rbar^4, the solid-area
-// change and the change of the centre distance read off the level set
-// (from the far ends and the half-widths of the grains). It fits x / Rbar = A t*^(1/n) over the
-// samples with --fit-min <= x / Rbar <= --fit-max (0.05, 0.3: the
-// Nichols-Mullins window) and over all samples with x / Rbar >= --fit-min.
-// Limits: --min-neck-growth (x_end / x_0), --max-volume-change,
-// --max-centre-shift (|d - d0| / d0), --max-neck-offset (distance of the
-// initial neck from the plane where the circles meet, relative to Rbar).
+// neck: SCENE has two grains R1, R2 (2D or 3D), or a packing whose
+// overlapping particles are neighbours; it runs STEPS steps (or to its end
+// time) and samples every --sample-interval steps (10) the neck x (two
+// grains: on the narrowest cross-section between the centres; a packing:
+// the smallest over the neighbour pairs), x / Rbar with Rbar =
+// 2 R1 R2 / (R1 + R2) (paper Fig. 27; a packing: the mean radius),
+// t* = C_s t / Rbar^4, the solid-volume change and the change of the
+// centre distances read off the level set (rays from each centre away
+// from its neighbours, see sample() in neck()). It fits
+// x / Rbar = A t*^(1/n) over the samples with --fit-min <= x / Rbar <=
+// --fit-max (0.05, 0.3: the Nichols-Mullins window) and over all samples
+// with x / Rbar >= --fit-min, and prints the CPU time of each timer
+// section. Limits: --min-neck-growth (x_end / x_0), --max-volume-change,
+// --max-centre-shift (|d - d0| / d0), --max-neck-offset (two grains:
+// distance of the initial neck from the plane where the spheres meet,
+// relative to Rbar).
 //
 // Both modes take --csv FILE and --set "Section/Entry=value" (scene
 // overrides for every run). Exit code 0 only if every check passes.
