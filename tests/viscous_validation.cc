@@ -13,7 +13,8 @@
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C, --max-curvature-error,
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
-// --max-stokes-its, hopper: --max-rejected, --min-rejected; spheres:
+// --max-stokes-its, hopper: --max-final-neck-error, --max-rejected,
+// --min-rejected; spheres:
 // --min-neck-growth, --max-volume-drift,
 // --min-early-slope, --max-early-slope, --max-final-radius-error; pore:
 // --pore-half-width W (required: a square window of half-width W around
@@ -695,6 +696,8 @@ namespace
       }
     check("finest max relative neck-radius error", table.finest("max_neck_error"),
           options, "max-neck-error");
+    check("finest final relative neck-radius error",
+          table.finest("final_neck_error"), options, "max-final-neck-error");
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
     check("finest rejected steps", table.finest("rejected"), options,

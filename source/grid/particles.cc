@@ -114,6 +114,24 @@ namespace levelsinter
                             const std::vector<double> &upper_corner)
   {
     const unsigned int dim = lower_corner.size();
+    // A particle that crosses a face is its own mirror image there if its
+    // centre lies on the face, or has one in the list: the scene is then
+    // symmetric about the face (e.g. the neck plane of a pair).
+    const auto mirrored = [&](const std::vector<double> &p,
+                              const unsigned int         d,
+                              const double               face,
+                              const double               tol) {
+      for (const auto &q : particles)
+        {
+          bool same = std::abs(q[d] - (2 * face - p[d])) <= tol &&
+                      std::abs(q[dim] - p[dim]) <= tol;
+          for (unsigned int k = 0; k < dim && same; ++k)
+            same = k == d || std::abs(q[k] - p[k]) <= tol;
+          if (same)
+            return true;
+        }
+      return false;
+    };
     for (unsigned int i = 0; i < particles.size(); ++i)
       {
         const auto  &p = particles[i];
@@ -122,11 +140,12 @@ namespace levelsinter
           {
             const double size = upper_corner[d] - lower_corner[d];
             const double tol  = 1e-12 * size;
-            const bool   on_lower = std::abs(p[d] - lower_corner[d]) <= tol;
-            const bool   on_upper = std::abs(p[d] - upper_corner[d]) <= tol;
-            if (p[d] < lower_corner[d] - tol || p[d] > upper_corner[d] + tol ||
-                (p[d] - r < lower_corner[d] - tol && !on_lower) ||
-                (p[d] + r > upper_corner[d] + tol && !on_upper))
+            const double lo = lower_corner[d], hi = upper_corner[d];
+            const bool   crosses_lower = p[d] - r < lo - tol;
+            const bool   crosses_upper = p[d] + r > hi + tol;
+            if (p[d] + r < lo - tol || p[d] - r > hi + tol ||
+                (crosses_lower && !mirrored(p, d, lo, tol)) ||
+                (crosses_upper && !mirrored(p, d, hi, tol)))
               {
                 std::ostringstream msg;
                 msg << "particle " << i + 1 << " (centre";
@@ -136,7 +155,8 @@ namespace levelsinter
                     << ") is not inside the domain along axis " << d
                     << " [" << lower_corner[d] << ", " << upper_corner[d]
                     << "]; a particle may only be cut by a face its centre "
-                       "lies on (symmetry plane)";
+                       "lies on or across which the list holds its mirror "
+                       "image (symmetry plane)";
                 throw std::runtime_error(msg.str());
               }
           }

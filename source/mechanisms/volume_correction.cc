@@ -13,18 +13,29 @@ namespace levelsinter
   void
   VolumeCorrection<dim>::add_velocity(const LevelSetField<dim> &alpha,
                                       const double,
-                                      const double        dt,
-                                      VelocityField<dim> &velocity)
+                                      const double,
+                                      VelocityField<dim> &)
+  {
+    // Nothing to add to the step itself; the first state the time loop
+    // asks about (t = 0, after any set_level_set()) is the volume to keep.
+    if (initial_volume < 0)
+      initial_volume = interface_measures::volume_and_area(alpha).solid_volume;
+  }
+
+  template <int dim>
+  bool
+  VolumeCorrection<dim>::add_correction_velocity(
+    const LevelSetField<dim> &alpha,
+    const double              dt,
+    VelocityField<dim>       &velocity)
   {
     const auto measures = interface_measures::volume_and_area(alpha);
-    if (initial_volume < 0)
-      initial_volume = measures.solid_volume;
     speed = 0;
     if (dt > 0 && measures.interface_area > 0)
       speed = (initial_volume - measures.solid_volume) /
               (dt * measures.interface_area);
     if (speed == 0)
-      return;
+      return false;
     const auto normals = nodal_normals(alpha, filter, true);
     velocity.add_vertex_values(alpha.dof_handler(),
                                [&](const auto &cell, const unsigned int v) {
@@ -34,6 +45,7 @@ namespace levelsinter
         value[c] = speed * normals[c](i);
       return value;
     });
+    return true;
   }
 
   template <int dim>

@@ -45,6 +45,7 @@ namespace levelsinter
     , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
     , alpha(tria)
     , velocity(tria)
+    , correction_velocity(tria)
     , mechanisms(make_scene_mechanisms<dim>(scene, timer_output))
     , initial_distance(make_initial_signed_distance<dim>(scene))
     , band_refinement(scene.refinement, level_set_filter)
@@ -96,6 +97,7 @@ namespace levelsinter
   {
     refine_initial_mesh();
     velocity.setup_dofs();
+    correction_velocity.setup_dofs();
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
@@ -128,6 +130,7 @@ namespace levelsinter
     // matrices costs more than refining and transferring.
     TimerOutput::Scope scope(timer_output, "system setup after adaptation");
     velocity.setup_dofs();
+    correction_velocity.setup_dofs();
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
@@ -153,6 +156,18 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->add_velocity(alpha, t, dt, velocity);
     interface_speed = speed_near_interface();
+  }
+
+  template <int dim>
+  unsigned int
+  Simulation<dim>::correct_step(const double dt)
+  {
+    correction_velocity.set_zero();
+    bool any = false;
+    for (auto &mechanism : mechanisms)
+      any = mechanism->add_correction_velocity(alpha, dt, correction_velocity) ||
+            any;
+    return any ? transport.advance(alpha, correction_velocity, dt) : 0;
   }
 
   template <int dim>
@@ -312,6 +327,7 @@ namespace levelsinter
           last_iterations = transport.advance(alpha, velocity, dt);
           for (auto &mechanism : mechanisms)
             mechanism->check_step(alpha);
+          last_iterations += correct_step(dt);
           return dt;
         }
       catch (const std::exception &failure)
@@ -362,8 +378,9 @@ namespace levelsinter
         if (step > 0 && step % scene.refinement.adapt_interval == 0)
           adapt_mesh();
 
-        // 1.-2. Interface velocity and transport with convective
-        //       reinitialisation (Eq. 68); a failed step is retried.
+        // 1.-2. Interface velocity, transport with convective
+        //       reinitialisation (Eq. 68), corrections (v^c, Eq. 113-116);
+        //       a failed step is retried.
         const double dt = take_step(t);
         total_iterations += last_iterations;
         t += dt;

@@ -23,8 +23,10 @@ namespace levelsinter
   read_particle_file(const std::string &file_name, const unsigned int dim);
 
   /**
-   * A particle may stick out of the box only through a face its centre lies
-   * on (a symmetry plane cutting it in half); otherwise it must be inside.
+   * A particle may stick out of the box only through a face it is symmetric
+   * about: one its centre lies on, or one across which the list holds its
+   * mirror image (a symmetry plane between two particles; the image itself
+   * may then have its centre outside). Otherwise it must be inside.
    */
   void
   check_particles_in_domain(const std::vector<std::vector<double>> &particles,

@@ -38,6 +38,20 @@ namespace levelsinter
                  VelocityField<dim>       &velocity) = 0;
 
     /**
+     * After a step has been accepted (check_step()): add to @p velocity a
+     * velocity that corrects the new state in a transport of its own over
+     * the same dt, as the volume correction of the paper's Algorithm 2
+     * does, and return true; false if the mechanism has none.
+     */
+    virtual bool
+    add_correction_velocity(const LevelSetField<dim> &,
+                            const double,
+                            VelocityField<dim> &)
+    {
+      return false;
+    }
+
+    /**
      * A time-step limit of the mechanism's own (e.g. an explicit capillary
      * or diffusion limit), on top of the CFL limit the time loop applies to
      * the summed velocity. Infinity if none.

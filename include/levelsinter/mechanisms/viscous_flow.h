@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <levelsinter/geometry/mixed_curvature_solver.h>
+#include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <levelsinter/mechanics/phase_law.h>
@@ -111,7 +112,7 @@ namespace levelsinter
     double                               h_min           = 0;
     // Interface measure at the start of the step from step_start_time, kept
     // for the CFL re-choice and the retries of that step.
-    double area_at_step_start = 0;
+    interface_measures::VolumeAndArea measures_at_step_start;
     double step_start_time    = -1;
     unsigned int                         last_iterations = 0;
     // CPU seconds of the last solve (preconditioner setup included),

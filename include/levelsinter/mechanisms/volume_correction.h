@@ -10,15 +10,16 @@ namespace levelsinter
    * Eq. 113-116: a normal speed, uniform over the interface, that gives
    * back over one step the solid volume gained or lost since t = 0,
    *
-   *   v^c = (V_0 - V(t)) / (dt S(t)),
+   *   v^c = (V_0 - V) / (dt S),
    *
-   * S the interface measure. The paper takes it after each transport and
-   * moves alpha a second time; here it is summed with the other
-   * mechanisms' velocities, so one transport carries both, and the deficit
-   * is measured against t = 0 rather than against the last step: what the
-   * remeshing and the reinitialisation lose is given back too. N_alpha are
-   * the nodal normals of the interpolated distance (nodal_normals()),
-   * zero where alpha is saturated, so the far field is untouched.
+   * V and S the solid volume and interface measure at the end of the step.
+   * As in the paper's Algorithm 2 it moves alpha in a transport of its own
+   * after the step, so the step's own checks (the surface-energy check of
+   * ViscousFlow) see only the physical motion. The deficit is measured
+   * against t = 0 rather than against the last step: what the remeshing
+   * loses is given back too. N_alpha are the nodal normals of the
+   * interpolated distance (nodal_normals()), zero where alpha is saturated,
+   * so the far field is untouched.
    */
   template <int dim>
   class VolumeCorrection : public Mechanism<dim>
@@ -35,6 +36,11 @@ namespace levelsinter
                  const double              t,
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
+
+    bool
+    add_correction_velocity(const LevelSetField<dim> &alpha,
+                            const double              dt,
+                            VelocityField<dim>       &velocity) override;
 
     std::vector<std::string>
     metric_names() const override;

@@ -25,7 +25,7 @@ namespace levelsinter
   /**
    * One scene from t = 0 to the end time. Each step reads like the physics:
    * interface velocity (the sum over the scene's mechanisms) -> transport
-   * with convective reinitialisation -> adapt the mesh around the interface
+   * with convective reinitialisation -> corrections (v^c) -> adapt the mesh around the interface
    * -> metrics and fields.
    */
   template <int dim>
@@ -113,6 +113,8 @@ namespace levelsinter
     speed_near_interface() const;
     void
     compute_interface_velocity(const double t, const double dt);
+    unsigned int
+    correct_step(const double dt);
     double
     take_step(const double t);
     void
@@ -129,6 +131,7 @@ namespace levelsinter
     LevelSetFilter                            level_set_filter;
     LevelSetField<dim>                        alpha;
     VelocityField<dim>                        velocity;
+    VelocityField<dim>                        correction_velocity;
     std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
     std::unique_ptr<Function<dim>>            initial_distance;
     InterfaceBandRefinement<dim>              band_refinement;
