@@ -194,7 +194,8 @@ namespace
                 "validation_output/sd_" + std::to_string(dim) + "d_n" +
                 std::to_string(mode) + "_l" + std::to_string(level) + "_s" +
                 std::to_string(steps) +
-                (base.volume_correction ? "_vc" : "") + (sign < 0 ? "_minus" : "");
+                (base.volume_correction ? "_vc" : "") +
+                (sign < 0 ? "_minus" : "");
               std::filesystem::create_directories(output);
               auto overrides = options.overrides;
               overrides.insert(
@@ -258,8 +259,9 @@ namespace
                           << sign * base.geometry.perturbation_amplitude
                           << ": rate " << this_rate << "\n";
               rate += this_rate / n_signs;
-              if (std::abs(volume - volume0) / volume0 > std::abs(volume_change))
-                volume_change = (volume - volume0) / volume0;
+              const double change = (volume - volume0) / volume0;
+              if (std::abs(change) > std::abs(volume_change))
+                volume_change = change;
               iterations += column_mean(output + "/metrics.csv",
                                         "surface_diffusion_iterations") /
                             n_signs;
@@ -332,8 +334,10 @@ namespace
         e1[1] = u[0];
         if constexpr (dim == 3)
           {
-            e1 = std::abs(u[2]) < 0.9 ? cross_product_3d(u, Tensor<1, 3>({0, 0, 1})) :
-                                        cross_product_3d(u, Tensor<1, 3>({1, 0, 0}));
+            const Tensor<1, 3> axis =
+              std::abs(u[2]) < 0.9 ? Tensor<1, 3>({0, 0, 1}) :
+                                     Tensor<1, 3>({1, 0, 0});
+            e1 = cross_product_3d(u, axis);
             e1 /= e1.norm();
             const Tensor<1, dim> e2 = cross_product_3d(u, e1);
             directions.insert(directions.end(), {e2, -e2});
