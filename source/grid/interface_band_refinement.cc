@@ -1,7 +1,13 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_generator.h>
 
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 
 #include <algorithm>
@@ -35,11 +41,42 @@ namespace levelsinter
   {}
 
   template <int dim>
+  unsigned int
+  InterfaceBandRefinement<dim>::finest_level() const
+  {
+    return settings.max_level + settings.curvature_levels;
+  }
+
+  template <int dim>
   bool
   InterfaceBandRefinement<dim>::mark_cells(
     parallel::distributed::Triangulation<dim> &tria,
     const LevelSetField<dim>                  &level_set) const
   {
+    const unsigned int extra_levels = settings.curvature_levels;
+    // Normals of the distance, not of alpha: the filter's curvature would
+    // tilt them (geometry/nodal_normals.h) and read as interface curvature.
+    std::array<TrilinosWrappers::MPI::Vector, dim> normals;
+    if (extra_levels > 0)
+      normals = nodal_normals(level_set, filter, /*from_distance=*/true);
+    const QMidpoint<dim> centre;
+    FEValues<dim>  fe_values(level_set.fe(), centre, update_gradients);
+    dealii::Vector<double> local_normal(level_set.fe().dofs_per_cell);
+    // sqrt(k1^2 + k2^2) at the cell centre: the Frobenius norm of the
+    // gradient of the Q1-interpolated nodal normals. In 2D it is |kappa|;
+    // in 3D it does not cancel on a saddle-shaped neck as div N would.
+    const auto curvature = [&](const auto &cell) {
+      fe_values.reinit(cell);
+      Tensor<2, dim> gradient;
+      for (unsigned int c = 0; c < dim; ++c)
+        {
+          cell->get_dof_values(normals[c], local_normal);
+          for (unsigned int i = 0; i < local_normal.size(); ++i)
+            gradient[c] += local_normal[i] * fe_values.shape_grad(i, 0);
+        }
+      return gradient.norm();
+    };
+
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
     bool                                 any_flag = false;
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
@@ -56,26 +93,39 @@ namespace levelsinter
               max_alpha      = std::max(max_alpha, a);
               nearest = std::min(nearest, std::abs(filter.distance(a)));
             }
-          const bool in_band = (min_alpha <= 0 && max_alpha >= 0) ||
-                               nearest <= settings.band_width;
+          const bool crossed = min_alpha <= 0 && max_alpha >= 0;
+          const bool in_band = crossed || nearest <= settings.band_width;
           const unsigned int level = cell->level();
           auto tria_cell = typename Triangulation<dim>::active_cell_iterator(
             &tria, cell->level(), cell->index());
-          if (in_band && level < settings.max_level)
+          bool refine = false, coarsen = false;
+          if (in_band && extra_levels > 0 && level >= settings.max_level)
             {
-              tria_cell->set_refine_flag();
-              any_flag = true;
+              // Extra level j only within band_width / 2^j of the interface.
+              const double distance  = crossed ? 0. : nearest;
+              unsigned int max_extra = 0;
+              while (max_extra < extra_levels &&
+                     distance <=
+                       settings.band_width / std::pow(2., max_extra + 1))
+                ++max_extra;
+              const unsigned int extra = level - settings.max_level;
+              const double       h = cell->diameter() / std::sqrt(double(dim));
+              const double       resolution =
+                settings.cells_per_curvature_radius * curvature(cell) * h;
+              refine  = extra < max_extra && resolution > 1;
+              coarsen = extra > 0 && (extra > max_extra || 4 * resolution <= 1);
             }
-          else if (!in_band && level > settings.min_level)
+          else
             {
-              tria_cell->set_coarsen_flag();
-              any_flag = true;
+              refine  = in_band && level < settings.max_level;
+              coarsen = (!in_band && level > settings.min_level) ||
+                        (in_band && level > settings.max_level);
             }
-          else if (in_band && level > settings.max_level)
-            {
-              tria_cell->set_coarsen_flag();
-              any_flag = true;
-            }
+          if (refine)
+            tria_cell->set_refine_flag();
+          else if (coarsen)
+            tria_cell->set_coarsen_flag();
+          any_flag = any_flag || refine || coarsen;
         }
     return Utilities::MPI::logical_or(any_flag, tria.get_communicator());
   }

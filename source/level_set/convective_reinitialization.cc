@@ -51,6 +51,7 @@ namespace levelsinter
     const LevelSetField<dim>      &level_set,
     const VelocityField<dim>      &velocity,
     const double                   dt,
+    const bool                     reinitialise,
     TrilinosWrappers::MPI::Vector &rhs)
   {
     TimerOutput::Scope scope(timer, "level set: assembly");
@@ -127,6 +128,7 @@ namespace levelsinter
               const double deviation =
                 std::abs(norm - filter.gradient_norm_target(a));
               const double need =
+                !reinitialise                           ? 0. :
                 settings.reinitialization_tolerance > 0 ?
                   std::min(1., deviation / settings.reinitialization_tolerance) :
                   1.;
@@ -225,11 +227,12 @@ namespace levelsinter
   unsigned int
   ConvectiveReinitialization<dim>::advance(LevelSetField<dim>       &level_set,
                                            const VelocityField<dim> &velocity,
-                                           const double              dt)
+                                           const double              dt,
+                                           const bool reinitialise)
   {
     TrilinosWrappers::MPI::Vector rhs(level_set.locally_owned(),
                                       level_set.dof_handler().get_communicator());
-    assemble(level_set, velocity, dt, rhs);
+    assemble(level_set, velocity, dt, reinitialise, rhs);
 
     TimerOutput::Scope scope(timer, "level set: solve");
     TrilinosWrappers::MPI::Vector solution(rhs);

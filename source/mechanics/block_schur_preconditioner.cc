@@ -15,17 +15,23 @@ namespace levelsinter
   {
     {
       // Smoothed aggregation for a vector elliptic operator: Chebyshev
-      // smoother, Q1 (no higher-order aggregation) and ML's default
-      // aggregation threshold 1e-4. Measured on Hopper's case at eta_f/eta_s
-      // = 1e-6 (doc/validation.md): threshold 0.02 gave 62 outer
-      // iterations, 1e-4 gave 42; 3 instead of 2 smoother sweeps or a
-      // W-cycle changed nothing.
+      // smoother (2 sweeps), Q1 (no higher-order aggregation), no dropping
+      // of weak connections and a W-cycle. With a viscosity contrast the
+      // V-cycle's coarse correction is what weakens as h shrinks (an exact
+      // solve of the first coarse level restores the count; more smoothing
+      // there does not): the W-cycle revisits the coarse levels, and
+      // without dropping the aggregates straddle the interface, where the
+      // prolongator smoothing follows the viscosity jump. Measured on
+      // Hopper's case at eta_f/eta_s = 1e-6, R/h = 80, mean outer count:
+      // threshold 1e-4 and V-cycle 42, threshold 0 and W-cycle 35 at lower
+      // CPU time (doc/numerics.md, "Stokes preconditioner").
       TrilinosWrappers::PreconditionAMG::AdditionalData data;
       data.elliptic              = true;
       data.higher_order_elements = false;
       data.smoother_type         = "Chebyshev";
       data.smoother_sweeps       = 2;
-      data.aggregation_threshold = 1e-4;
+      data.aggregation_threshold = 0;
+      data.w_cycle               = true;
       const auto &matrix = system_matrix.block(0, 0).trilinos_matrix();
       Teuchos::ParameterList              parameters;
       std::unique_ptr<Epetra_MultiVector> no_constant_modes;

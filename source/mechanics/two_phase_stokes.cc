@@ -22,6 +22,7 @@
 
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
+#include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
 
@@ -38,6 +39,7 @@ namespace levelsinter
                                       const Settings           &settings,
                                       const PhaseLaw           &phase_law)
     : settings(settings)
+    , free_motions(dim, settings.symmetry_boundaries)
     , phase_law(phase_law)
     , finite_element(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1)
     , dofs(tria)
@@ -131,26 +133,13 @@ namespace levelsinter
   void
   TwoPhaseStokes<dim>::pin_rigid_body_modes()
   {
-    // A rigid motion survives the symmetry planes if its velocity is
-    // tangential to all of them: a translation along e_k iff no plane has
-    // normal e_k; a rotation about e_k iff every plane has normal e_k (a
-    // plane with another normal sees a nonzero normal velocity).
-    std::vector<bool> plane_normal_to(dim, false);
-    for (const types::boundary_id id : settings.symmetry_boundaries)
-      plane_normal_to[id / 2] = true;
-    const auto all_planes_normal_to = [&](const unsigned int k) {
-      for (unsigned int d = 0; d < dim; ++d)
-        if (d != k && plane_normal_to[d])
-          return false;
-      return true;
-    };
-
-    // Pin what survives at box corners: with the lower corner a, b = a +
-    // L_x e_x and c = a + L_y e_y, v_k(a) = 0 removes the translation along
-    // e_k, v_y(b) = 0 the rotation about z, v_z(b) = 0 the one about y and
-    // v_z(c) = 0 the one about x. The capillary load is self-equilibrated
-    // (see the class documentation), so the pins carry no reaction: they
-    // only select one member of the family of solutions.
+    // Pin what survives the symmetry planes at box corners: with the lower
+    // corner a, b = a + L_x e_x and c = a + L_y e_y, v_k(a) = 0 removes the
+    // translation along e_k, v_y(b) = 0 the rotation about z, v_z(b) = 0
+    // the one about y and v_z(c) = 0 the one about x. The capillary load is
+    // self-equilibrated (see the class documentation), so the pins carry no
+    // reaction: they only select one member of the family of solutions
+    // (remove_rigid_motion() then selects the physical one).
     Point<dim> lower, upper;
     for (unsigned int d = 0; d < dim; ++d)
       {
@@ -168,20 +157,15 @@ namespace levelsinter
     b[0]         = upper[0];
     c[1]         = upper[1];
     std::vector<std::pair<Point<dim>, unsigned int>> pins;
-    for (unsigned int k = 0; k < dim; ++k)
-      if (!plane_normal_to[k])
-        pins.emplace_back(lower, k);
-    if (dim == 2 && settings.symmetry_boundaries.empty())
-      pins.emplace_back(b, 1);
-    if (dim == 3)
-      {
-        if (all_planes_normal_to(2))
-          pins.emplace_back(b, 1);
-        if (all_planes_normal_to(1))
-          pins.emplace_back(b, 2);
-        if (all_planes_normal_to(0))
-          pins.emplace_back(c, 2);
-      }
+    for (const unsigned int k : free_motions.translations)
+      pins.emplace_back(lower, k);
+    for (const unsigned int k : free_motions.rotations)
+      if (k == 2)
+        pins.emplace_back(b, 1);
+      else if (k == 1)
+        pins.emplace_back(b, 2);
+      else
+        pins.emplace_back(c, 2);
     const double tolerance = 1e-10 * lower.distance(upper);
     for (const auto &cell : dofs.active_cell_iterators())
       if (!cell->is_artificial())
@@ -581,6 +565,13 @@ namespace levelsinter
     constraints.distribute(owned_solution);
     ghosted_solution = owned_solution;
     return iterations;
+  }
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::remove_rigid_motion(const LevelSetField<dim> &alpha)
+  {
+    remove_free_rigid_motion(dofs, alpha, free_motions, ghosted_solution);
   }
 
   template class TwoPhaseStokes<2>;

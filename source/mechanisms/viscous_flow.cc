@@ -133,6 +133,7 @@ namespace levelsinter
       last_iterations = operator_->solve();
       last_solve_cpu  = cpu_timer.cpu_time(); // summed over the ranks
     }
+    operator_->remove_rigid_motion(alpha);
 
     // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by
     // vertex (the first dim vertex DoFs of the Stokes element are the

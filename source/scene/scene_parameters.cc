@@ -207,6 +207,22 @@ namespace levelsinter
                         "5",
                         Patterns::Integer(1),
                         "Re-adapt the mesh every this many steps.");
+      prm.declare_entry(
+        "Curvature refinement levels",
+        "0",
+        Patterns::Integer(0, 10),
+        "Extra levels above the maximum level where the interface is "
+        "sharply curved (necks): a band cell is refined further while its "
+        "size h and the curvature k = sqrt(k1^2 + k2^2) of the level set "
+        "there (|kappa| in 2D) give (Cells per curvature radius) * k * h > 1. "
+        "Extra level j is confined to the band width / 2^j. 0 = off.");
+      prm.declare_entry(
+        "Cells per curvature radius",
+        "4",
+        Patterns::Double(0.1),
+        "With Curvature refinement levels > 0: how many cells a curvature "
+        "radius 1/k must span before the refinement stops. A cell is "
+        "coarsened again once its parent would span twice as many.");
     }
     prm.leave_subsection();
 
@@ -470,6 +486,12 @@ namespace levelsinter
     refinement.max_level      = prm.get_integer("Maximum level");
     refinement.band_width     = prm.get_double("Band width");
     refinement.adapt_interval = prm.get_integer("Adapt interval");
+    refinement.curvature_levels = prm.get_integer("Curvature refinement levels");
+    refinement.cells_per_curvature_radius =
+      prm.get_double("Cells per curvature radius");
+    if (refinement.max_level + refinement.curvature_levels > 20)
+      fail("Mesh refinement/Curvature refinement levels",
+           "Maximum level + Curvature refinement levels must not exceed 20");
     if (refinement.max_level < refinement.min_level)
       fail("Mesh refinement/Maximum level",
            "must be at least the minimum level (" +
@@ -558,6 +580,10 @@ namespace levelsinter
     // through the filter, which saturates at E; and between two adaptations
     // the interface moves up to adapt_interval * CFL finest cells, which the
     // band must still hold (plus one cell for the cut cell itself).
+    // Curvature refinement keeps this sufficient: extra level j lives in a
+    // band of width band_width / 2^j, which holds (adapt_interval * CFL + 1)
+    // of its own cells whenever this check passes, and the CFL step then
+    // uses the smaller h_min.
     // At E itself every saturated node reads as "in the band", which
     // refines the whole box: on an adaptive mesh the band must stay below E.
     if (refinement.band_width > level_set.filter_thickness ||

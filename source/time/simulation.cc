@@ -88,7 +88,7 @@ namespace levelsinter
       {
         alpha.setup_dofs();
         alpha.interpolate(filtered);
-        if (pass > scene.refinement.max_level - scene.refinement.min_level ||
+        if (pass > band_refinement.finest_level() - scene.refinement.min_level ||
             !band_refinement.mark_cells(tria, alpha))
           break;
         tria.execute_coarsening_and_refinement();
@@ -138,6 +138,8 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
+    // Curvature refinement makes the finest cells come and go with the necks.
+    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
   }
 
   template <int dim>
@@ -171,7 +173,11 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       any = mechanism->add_correction_velocity(alpha, dt, correction_velocity) ||
             any;
-    return any ? transport.advance(alpha, correction_velocity, dt) : 0;
+    return any ? transport.advance(alpha,
+                                   correction_velocity,
+                                   dt,
+                                   /*reinitialise=*/false) :
+                 0;
   }
 
   template <int dim>

@@ -62,18 +62,23 @@ namespace levelsinter
     /**
      * Advance alpha by dt with the given velocity (evaluated by the caller
      * at the time the theta scheme needs). Returns the GMRES iterations;
-     * throws if the solver fails.
+     * throws if the solver fails. With @p reinitialise false the step is
+     * pure transport (a small correction after a step that has already
+     * been reinitialised: the reinitialisation moves the interface by a
+     * fixed amount per call, so a second one per step costs accuracy).
      */
     unsigned int
     advance(LevelSetField<dim>       &level_set,
             const VelocityField<dim> &velocity,
-            const double              dt);
+            const double              dt,
+            const bool                reinitialise = true);
 
   private:
     void
     assemble(const LevelSetField<dim>       &level_set,
              const VelocityField<dim>       &velocity,
              const double                    dt,
+             const bool                      reinitialise,
              TrilinosWrappers::MPI::Vector &rhs);
 
     const LevelSetFilter             filter;

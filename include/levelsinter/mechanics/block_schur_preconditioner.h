@@ -17,8 +17,8 @@ namespace levelsinter
    *   [B  -C ] [p] = [g]
    * (A viscous, C the ASGS stabilisation plus the compressibility mass):
    *   P = [A  B^T; 0  -S],  S ~ B A^{-1} B^T + C ~ M_{1/eta_K} + C,
-   * with one AMG V-cycle for A and one for the assembled S approximation
-   * (step-32/55 structure). M_{1/eta_K} weights the pressure mass with the
+   * with one AMG W-cycle for A and one V-cycle for the assembled S
+   * approximation (step-32/55 structure). M_{1/eta_K} weights the pressure mass with the
    * inverse of the cell-mean viscosity (Grinevich & Olshanskii 2009), which
    * keeps the outer FGMRES count flat in h and in the viscosity contrast
    * (doc/numerics.md, "Stokes preconditioner").

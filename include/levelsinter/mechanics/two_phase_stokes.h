@@ -14,6 +14,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/phase_law.h>
 
 #include <vector>
@@ -103,6 +104,13 @@ namespace levelsinter
     unsigned int
     solve();
 
+    /**
+     * Subtract the rigid motion of the solid {alpha < 0} left free by the
+     * symmetry planes (remove_free_rigid_motion()): call after solve().
+     */
+    void
+    remove_rigid_motion(const LevelSetField<dim> &alpha);
+
     /** The ghosted solution (v, p). */
     const BlockVector &
     solution() const
@@ -136,6 +144,7 @@ namespace levelsinter
                   VectorType                          &rhs);
 
     Settings                  settings;
+    const FreeRigidMotions    free_motions;
     const PhaseLaw           &phase_law;
     FESystem<dim>             finite_element;
     DoFHandler<dim>           dofs;

@@ -75,6 +75,10 @@ namespace levelsinter
       unsigned int max_level      = 0;
       double       band_width     = 0;
       unsigned int adapt_interval = 1;
+      // Extra levels above max_level where the interface is sharply curved
+      // (0 = off) and the cells wanted across a curvature radius there.
+      unsigned int curvature_levels         = 0;
+      double       cells_per_curvature_radius = 4;
     } refinement;
 
     struct Time

@@ -1,0 +1,195 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/mechanics/free_rigid_motion.h>
+
+namespace levelsinter
+{
+  FreeRigidMotions::FreeRigidMotions(
+    const unsigned int                      dim,
+    const std::vector<types::boundary_id> &symmetry_planes)
+  {
+    std::vector<bool> plane_normal_to(dim, false);
+    for (const types::boundary_id id : symmetry_planes)
+      plane_normal_to[id / 2] = true;
+    for (unsigned int k = 0; k < dim; ++k)
+      if (!plane_normal_to[k])
+        translations.push_back(k);
+    if (dim == 2 && symmetry_planes.empty())
+      rotations.push_back(2);
+    if (dim == 3)
+      for (unsigned int k = 0; k < dim; ++k)
+        {
+          bool all_normal_to_k = true;
+          for (unsigned int d = 0; d < dim; ++d)
+            if (d != k && plane_normal_to[d])
+              all_normal_to_k = false;
+          if (all_normal_to_k)
+            rotations.push_back(k);
+        }
+  }
+
+  template <int dim>
+  Tensor<1, dim>
+  FreeRigidMotions::mode(const unsigned int m,
+                         const Point<dim>  &x,
+                         const Point<dim>  &centre) const
+  {
+    Tensor<1, dim> v;
+    if (m < translations.size())
+      {
+        v[translations[m]] = 1;
+        return v;
+      }
+    // e_k x (x - centre); in 2D e_z x r = (-r_y, r_x).
+    const unsigned int   k = rotations[m - translations.size()];
+    const Tensor<1, dim> r = x - centre;
+    if constexpr (dim == 2)
+      {
+        v[0] = -r[1];
+        v[1] = r[0];
+      }
+    else
+      {
+        Tensor<1, dim> axis;
+        axis[k] = 1;
+        v       = cross_product_3d(axis, r);
+      }
+    return v;
+  }
+
+  template <int dim>
+  void
+  remove_free_rigid_motion(const DoFHandler<dim>              &dofs,
+                           const LevelSetField<dim>           &level_set,
+                           const FreeRigidMotions             &motions,
+                           TrilinosWrappers::MPI::BlockVector &solution)
+  {
+    const unsigned int n = motions.size();
+    if (n == 0)
+      return;
+    const MPI_Comm comm = dofs.get_communicator();
+
+    // Two Gauss points per direction, a point counting as solid if
+    // alpha_h < 0 there: the projection only has to remove the drift, and
+    // an O(h) error in the solid's weight changes the gauge by as much.
+    const QGauss<dim> quadrature(2);
+    FEValues<dim>     stokes_values(dofs.get_fe(),
+                                quadrature,
+                                update_values | update_quadrature_points |
+                                  update_JxW_values);
+    FEValues<dim> alpha_values(level_set.fe(), quadrature, update_values);
+    std::vector<double>         alpha_q(quadrature.size());
+    std::vector<Vector<double>> v_q(quadrature.size(),
+                                    Vector<double>(dim + 1));
+
+    // Pass 1: solid volume and centroid (the rotation centre).
+    double     volume = 0;
+    Point<dim> centroid;
+    const auto for_solid_points = [&](const auto &on_point) {
+      for (const auto &cell : dofs.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            const typename DoFHandler<dim>::active_cell_iterator alpha_cell(
+              &dofs.get_triangulation(),
+              cell->level(),
+              cell->index(),
+              &level_set.dof_handler());
+            alpha_values.reinit(alpha_cell);
+            alpha_values.get_function_values(level_set.alpha(), alpha_q);
+            stokes_values.reinit(cell);
+            stokes_values.get_function_values(solution, v_q);
+            for (const unsigned int q : stokes_values.quadrature_point_indices())
+              if (alpha_q[q] < 0)
+                on_point(stokes_values.quadrature_point(q),
+                         stokes_values.JxW(q),
+                         v_q[q]);
+          }
+    };
+    for_solid_points([&](const Point<dim> &x, const double w, const auto &) {
+      volume += w;
+      centroid += w * x;
+    });
+    volume = Utilities::MPI::sum(volume, comm);
+    if (volume == 0)
+      return;
+    for (unsigned int d = 0; d < dim; ++d)
+      centroid[d] = Utilities::MPI::sum(centroid[d], comm) / volume;
+
+    // Pass 2: Gram matrix G_mn = (phi_m, phi_n) and b_m = (phi_m, v) over
+    // the solid; the rigid part is sum_m c_m phi_m with G c = b.
+    std::vector<double> gram(n * n, 0.), rhs(n, 0.);
+    for_solid_points(
+      [&](const Point<dim> &x, const double w, const Vector<double> &v) {
+        for (unsigned int m = 0; m < n; ++m)
+          {
+            const auto phi_m = motions.mode<dim>(m, x, centroid);
+            for (unsigned int d = 0; d < dim; ++d)
+              rhs[m] += w * phi_m[d] * v[d];
+            for (unsigned int l = 0; l < n; ++l)
+              gram[m * n + l] += w * (phi_m * motions.mode<dim>(l, x, centroid));
+          }
+      });
+    Utilities::MPI::sum(gram, comm, gram);
+    Utilities::MPI::sum(rhs, comm, rhs);
+    FullMatrix<double> G(n, n);
+    Vector<double>     b(n), c(n);
+    for (unsigned int m = 0; m < n; ++m)
+      {
+        b[m] = rhs[m];
+        for (unsigned int l = 0; l < n; ++l)
+          G(m, l) = gram[m * n + l];
+      }
+    G.gauss_jordan();
+    G.vmult(c, b);
+
+    // The modes are linear in x, so their nodal interpolant is exact and
+    // consistent with the hanging-node constraints.
+    std::vector<IndexSet> owned_blocks;
+    for (unsigned int b = 0; b < solution.n_blocks(); ++b)
+      owned_blocks.push_back(solution.block(b).locally_owned_elements());
+    TrilinosWrappers::MPI::BlockVector owned(owned_blocks, comm);
+    owned                 = solution;
+    const IndexSet &mine  = owned.locally_owned_elements();
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            Tensor<1, dim> rigid;
+            for (unsigned int m = 0; m < n; ++m)
+              rigid += c[m] * motions.mode<dim>(m, cell->vertex(v), centroid);
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                const auto i = cell->vertex_dof_index(v, d);
+                if (mine.is_element(i))
+                  owned(i) = solution(i) - rigid[d];
+              }
+          }
+    owned.compress(VectorOperation::insert);
+    solution = owned;
+  }
+
+  template Tensor<1, 2>
+  FreeRigidMotions::mode<2>(const unsigned int,
+                            const Point<2> &,
+                            const Point<2> &) const;
+  template Tensor<1, 3>
+  FreeRigidMotions::mode<3>(const unsigned int,
+                            const Point<3> &,
+                            const Point<3> &) const;
+  template void
+  remove_free_rigid_motion(const DoFHandler<2> &,
+                           const LevelSetField<2> &,
+                           const FreeRigidMotions &,
+                           TrilinosWrappers::MPI::BlockVector &);
+  template void
+  remove_free_rigid_motion(const DoFHandler<3> &,
+                           const LevelSetField<3> &,
+                           const FreeRigidMotions &,
+                           TrilinosWrappers::MPI::BlockVector &);
+} // namespace levelsinter
