@@ -87,8 +87,9 @@ namespace levelsinter
         "in 3D; the Mullins test of surface diffusion).");
       prm.declare_entry("Perturbation amplitude",
                         "0.05",
-                        Patterns::Double(0, 0.5),
-                        "delta of the perturbed particle, relative to R.");
+                        Patterns::Double(-0.5, 0.5),
+                        "delta of the perturbed particle, relative to R "
+                        "(either sign).");
       prm.declare_entry("Perturbation mode",
                         "2",
                         Patterns::Integer(0),

@@ -39,7 +39,11 @@ namespace levelsinter
     : scene(scene)
     , comm(comm)
     , pcout(progress_stream, Utilities::MPI::this_mpi_process(comm) == 0)
-    , timer_output(comm, pcout, TimerOutput::never, TimerOutput::wall_times)
+    // CPU per section as well: wall times mean little on shared cores.
+    , timer_output(comm,
+                   pcout,
+                   TimerOutput::never,
+                   TimerOutput::cpu_and_wall_times)
     , tria(comm,
            Triangulation<dim>::limit_level_difference_at_vertices)
     , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
