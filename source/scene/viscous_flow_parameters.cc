@@ -84,9 +84,9 @@ namespace levelsinter
       prm.declare_entry("Symmetry planes",
                         "",
                         Patterns::MultipleSelection("x-|x+|y-|y+|z-|z+"),
-                        "Box faces with zero normal velocity. Rigid-body "
-                        "modes the planes leave free are pinned at box "
-                        "corners.");
+                        "Box faces with zero normal velocity. The rigid "
+                        "motion the planes leave free is removed from the "
+                        "velocity (no drift of the particles as a whole).");
       prm.declare_entry("Solver",
                         "iterative",
                         Patterns::Selection("iterative|direct"),
