@@ -27,6 +27,35 @@ namespace levelsinter::study
     return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   }
 
+  // Least-squares line y = intercept + slope x.
+  struct Line
+  {
+    double slope     = std::numeric_limits<double>::quiet_NaN();
+    double intercept = std::numeric_limits<double>::quiet_NaN();
+    unsigned int points = 0;
+  };
+
+  inline Line
+  least_squares(const std::vector<double> &x, const std::vector<double> &y)
+  {
+    Line         line;
+    const double n = x.size();
+    line.points    = x.size();
+    if (x.size() < 2)
+      return line;
+    double sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (unsigned int i = 0; i < x.size(); ++i)
+      {
+        sx += x[i];
+        sy += y[i];
+        sxx += x[i] * x[i];
+        sxy += x[i] * y[i];
+      }
+    line.slope     = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    line.intercept = (sy - line.slope * sx) / n;
+    return line;
+  }
+
   struct Options
   {
     // --max-volume-error 1e-3 ...: limits and numeric settings by name.

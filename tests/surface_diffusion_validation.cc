@@ -90,35 +90,6 @@ namespace
     return n > 0 ? sum / n : 0;
   }
 
-  // Least-squares line y = intercept + slope x.
-  struct Line
-  {
-    double slope     = std::numeric_limits<double>::quiet_NaN();
-    double intercept = std::numeric_limits<double>::quiet_NaN();
-    unsigned int points = 0;
-  };
-
-  Line
-  least_squares(const std::vector<double> &x, const std::vector<double> &y)
-  {
-    Line         line;
-    const double n = x.size();
-    line.points    = x.size();
-    if (x.size() < 2)
-      return line;
-    double sx = 0, sy = 0, sxx = 0, sxy = 0;
-    for (unsigned int i = 0; i < x.size(); ++i)
-      {
-        sx += x[i];
-        sy += y[i];
-        sxx += x[i] * x[i];
-        sxy += x[i] * y[i];
-      }
-    line.slope     = (n * sxy - sx * sy) / (n * sxx - sx * sx);
-    line.intercept = (sy - line.slope * sx) / n;
-    return line;
-  }
-
   // Amplitude of mode n relative to R, from the discrete interface:
   // a_n = (1/pi) int_0^2pi r cos(n theta) dtheta, and dtheta = (N.e_r)/r ds
   // on a star-shaped curve, so a_n = (1/pi) int_Gamma cos(n theta) N.e_r ds.
@@ -253,7 +224,8 @@ namespace
                   .solid_volume;
               // Means over the signs; the volume change of the larger drift.
               const double n_signs   = both_signs ? 2 : 1;
-              const double this_rate = -least_squares(times, logs).slope;
+              const double this_rate =
+                -study::least_squares(times, logs).slope;
               if (both_signs && study::is_root())
                 std::cout << "delta = "
                           << sign * base.geometry.perturbation_amplitude
@@ -513,7 +485,7 @@ namespace
             x.push_back(log_t[i]);
             y.push_back(log_x[i]);
           }
-      const Line line = least_squares(x, y);
+      const study::Line line = study::least_squares(x, y);
       if (study::is_root())
         std::cout << "fit " << name << " (" << line.points << " samples, "
                   << lo << " <= x/Rbar"

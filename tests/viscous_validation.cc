@@ -805,7 +805,7 @@ namespace
           options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
         // Least-squares slope of log x against log t' while x < 0.3 a,
         // where the law applies.
-        double sx = 0, sy = 0, sxx = 0, sxy = 0, n = 0;
+        std::vector<double> log_t, log_x;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
             const double t_touch = t0 + t[i];
@@ -815,12 +815,11 @@ namespace
                      << std::sqrt(1.5 * gamma * t_touch / (eta * a)) << '\n';
             if (x < 0.3)
               {
-                const double lx = std::log(t_touch), ly = std::log(x);
-                sx += lx, sy += ly, sxx += lx * lx, sxy += lx * ly, n += 1;
+                log_t.push_back(std::log(t_touch));
+                log_x.push_back(std::log(x));
               }
           }
-        const double slope = n > 1 ? (n * sxy - sx * sy) / (n * sxx - sx * sx) :
-                                     std::numeric_limits<double>::quiet_NaN();
+        const double slope = study::least_squares(log_t, log_x).slope;
         const double final_x = neck.back() / a;
         table.add(run_row(level,
                           run,

@@ -3,6 +3,8 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -88,55 +90,50 @@ namespace levelsinter
     std::vector<Vector<double>> v_q(quadrature.size(),
                                     Vector<double>(dim + 1));
 
-    // Pass 1: solid volume and centroid (the rotation centre).
-    double     volume = 0;
-    Point<dim> centroid;
-    const auto for_solid_points = [&](const auto &on_point) {
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            const typename DoFHandler<dim>::active_cell_iterator alpha_cell(
-              &dofs.get_triangulation(),
-              cell->level(),
-              cell->index(),
-              &level_set.dof_handler());
-            alpha_values.reinit(alpha_cell);
-            alpha_values.get_function_values(level_set.alpha(), alpha_q);
-            stokes_values.reinit(cell);
-            stokes_values.get_function_values(solution, v_q);
-            for (const unsigned int q : stokes_values.quadrature_point_indices())
-              if (alpha_q[q] < 0)
-                on_point(stokes_values.quadrature_point(q),
-                         stokes_values.JxW(q),
-                         v_q[q]);
-          }
-    };
-    for_solid_points([&](const Point<dim> &x, const double w, const auto &) {
-      volume += w;
-      centroid += w * x;
-    });
-    volume = Utilities::MPI::sum(volume, comm);
-    if (volume == 0)
-      return;
-    for (unsigned int d = 0; d < dim; ++d)
-      centroid[d] = Utilities::MPI::sum(centroid[d], comm) / volume;
+    // Rotations about the centre of the box. A rotation about e_k is free
+    // only with the translations normal to e_k, so the span of the free
+    // motions, and the projection, do not depend on the centre; the box
+    // centre keeps the Gram matrix well conditioned.
+    const Point<dim> centre =
+      GridTools::compute_bounding_box(dofs.get_triangulation()).center();
 
-    // Pass 2: Gram matrix G_mn = (phi_m, phi_n) and b_m = (phi_m, v) over
-    // the solid; the rigid part is sum_m c_m phi_m with G c = b.
-    std::vector<double> gram(n * n, 0.), rhs(n, 0.);
-    for_solid_points(
-      [&](const Point<dim> &x, const double w, const Vector<double> &v) {
-        for (unsigned int m = 0; m < n; ++m)
-          {
-            const auto phi_m = motions.mode<dim>(m, x, centroid);
-            for (unsigned int d = 0; d < dim; ++d)
-              rhs[m] += w * phi_m[d] * v[d];
-            for (unsigned int l = 0; l < n; ++l)
-              gram[m * n + l] += w * (phi_m * motions.mode<dim>(l, x, centroid));
-          }
-      });
+    // Gram matrix G_mn = (phi_m, phi_n) and b_m = (phi_m, v) over the
+    // solid; the rigid part is sum_m c_m phi_m with G c = b.
+    std::vector<double>         gram(n * n, 0.), rhs(n, 0.);
+    std::vector<Tensor<1, dim>> phi(n);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const typename DoFHandler<dim>::active_cell_iterator alpha_cell(
+            &dofs.get_triangulation(),
+            cell->level(),
+            cell->index(),
+            &level_set.dof_handler());
+          alpha_values.reinit(alpha_cell);
+          alpha_values.get_function_values(level_set.alpha(), alpha_q);
+          stokes_values.reinit(cell);
+          stokes_values.get_function_values(solution, v_q);
+          for (const unsigned int q : stokes_values.quadrature_point_indices())
+            if (alpha_q[q] < 0)
+              {
+                const double w = stokes_values.JxW(q);
+                for (unsigned int m = 0; m < n; ++m)
+                  phi[m] = motions.mode<dim>(m,
+                                             stokes_values.quadrature_point(q),
+                                             centre);
+                for (unsigned int m = 0; m < n; ++m)
+                  {
+                    for (unsigned int d = 0; d < dim; ++d)
+                      rhs[m] += w * phi[m][d] * v_q[q][d];
+                    for (unsigned int l = 0; l < n; ++l)
+                      gram[m * n + l] += w * (phi[m] * phi[l]);
+                  }
+              }
+        }
     Utilities::MPI::sum(gram, comm, gram);
     Utilities::MPI::sum(rhs, comm, rhs);
+    if (gram[0] == 0) // no solid
+      return;
     FullMatrix<double> G(n, n);
     Vector<double>     b(n), c(n);
     for (unsigned int m = 0; m < n; ++m)
@@ -162,7 +159,7 @@ namespace levelsinter
           {
             Tensor<1, dim> rigid;
             for (unsigned int m = 0; m < n; ++m)
-              rigid += c[m] * motions.mode<dim>(m, cell->vertex(v), centroid);
+              rigid += c[m] * motions.mode<dim>(m, cell->vertex(v), centre);
             for (unsigned int d = 0; d < dim; ++d)
               {
                 const auto i = cell->vertex_dof_index(v, d);

@@ -52,8 +52,8 @@ namespace levelsinter
   /**
    * Subtract from the velocity (the first dim components of @p dofs'
    * element, Q1) its rigid part over the solid {alpha < 0}: the L2(solid)
-   * projection onto the free motions, rotations about the solid's
-   * centroid. Pinning the free motions at box corners selects one member
+   * projection onto the free motions (their span does not depend on the
+   * rotation centre). Pinning the free motions at box corners selects one member
    * of the family of solutions, in which the particles drift with whatever
    * velocity the atmosphere has at the pins; this selects the member whose
    * solid has no net translation or rotation, which is what free particles
