@@ -18,7 +18,9 @@
 // first step), --max-fine-cell-distance (the farthest of them from the
 // neck, / R); spheres:
 // --min-neck-growth, --max-volume-drift,
-// --min-early-slope, --max-early-slope, --max-final-radius-error; pore:
+// --min-early-slope, --max-early-slope, --max-final-radius-error,
+// --min-neck_tau0.5, --min-neck_tau1, --min-neck_tau2 (x/a at those
+// t gamma/(eta a) from touching); pore:
 // --pore-half-width W (required: a square window of half-width W around
 // the particles' centroid that holds the pore and solid only),
 // --max-closure-time, --max-pore-area-ratio, --max-area-drift; coalescence:
@@ -786,9 +788,21 @@ namespace
           const Options                   &options)
   {
     constexpr int dim = 3;
-    Table table(run_columns({"neck_growth", "early_slope", "final_neck_over_a",
-                             "final_radius_error", "volume_drift"}),
-                options.csv);
+    // The early neck x/a at these t gamma/(eta a) from touching, for the
+    // comparison across resolutions (doc/validation.md).
+    const std::vector<double> early_times = {0.5, 1, 2};
+    std::vector<std::string>  columns     = {"neck_growth",
+                                             "early_slope",
+                                             "final_neck_over_a",
+                                             "final_radius_error",
+                                             "volume_drift"};
+    for (const double tau : early_times)
+      {
+        std::ostringstream name;
+        name << "neck_tau" << tau;
+        columns.push_back(name.str());
+      }
+    Table                 table(run_columns(columns), options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
       {
@@ -804,30 +818,45 @@ namespace
         auto         series = open_series(
           options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
         // Least-squares slope of log x against log t' while x < 0.3 a,
-        // where the law applies.
+        // where the law applies; x/a at the early times, interpolated
+        // linearly between the samples around them (NaN when the run does
+        // not span them).
         std::vector<double> log_t, log_x;
+        std::vector<double> early_necks(early_times.size(),
+                                        std::numeric_limits<double>::quiet_NaN());
         for (unsigned int i = 0; i < t.size(); ++i)
           {
-            const double t_touch = t0 + t[i];
-            const double x       = neck[i] / a;
+            const double tau = (t0 + t[i]) * gamma / (eta * a);
+            const double x   = neck[i] / a;
             if (series.is_open())
-              series << t_touch * gamma / (eta * a) << ',' << x << ','
-                     << std::sqrt(1.5 * gamma * t_touch / (eta * a)) << '\n';
+              series << tau << ',' << x << ',' << std::sqrt(1.5 * tau) << '\n';
             if (x < 0.3)
               {
-                log_t.push_back(std::log(t_touch));
+                log_t.push_back(std::log(tau));
                 log_x.push_back(std::log(x));
               }
+            if (i == 0)
+              continue;
+            const double previous_tau = (t0 + t[i - 1]) * gamma / (eta * a);
+            for (unsigned int k = 0; k < early_times.size(); ++k)
+              if (previous_tau < early_times[k] && early_times[k] <= tau)
+                {
+                  const double s =
+                    (early_times[k] - previous_tau) / (tau - previous_tau);
+                  early_necks[k] = ((1 - s) * neck[i - 1] + s * neck[i]) / a;
+                }
           }
-        const double slope = study::least_squares(log_t, log_x).slope;
-        const double final_x = neck.back() / a;
-        table.add(run_row(level,
-                          run,
-                          {neck.back() / neck[0],
-                           slope,
-                           final_x,
-                           std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
-                           std::abs(run.metrics.at("volume_change").back())}));
+        const double        slope   = study::least_squares(log_t, log_x).slope;
+        const double        final_x = neck.back() / a;
+        std::vector<double> values  = {
+          neck.back() / neck[0],
+          slope,
+          final_x,
+          std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
+          std::abs(run.metrics.at("volume_change").back())};
+        values.insert(values.end(), early_necks.begin(), early_necks.end());
+        table.add(run_row(level, run, values));
+        runs.push_back(run);
       }
     check("finest neck growth x_end / x_0", table.finest("neck_growth"),
           options, "min-neck-growth", false);
@@ -840,6 +869,14 @@ namespace
     check("finest final radius error against 2^(1/3) a",
           table.finest("final_radius_error"), options,
           "max-final-radius-error");
+    for (const auto &name : columns)
+      if (name.rfind("neck_tau", 0) == 0)
+        check("finest neck / a at t gamma/(eta a) = " + name.substr(8) +
+                " (>=)",
+              table.finest(name),
+              options,
+              "min-" + name,
+              false);
     check_iterations(runs, options);
   }
 
