@@ -83,6 +83,13 @@ namespace levelsinter
       return alpha;
     }
 
+    /** The interface velocity of the last step (the sum over mechanisms). */
+    const VelocityField<dim> &
+    interface_velocity() const
+    {
+      return velocity;
+    }
+
     const LevelSetFilter &
     filter() const
     {
