@@ -37,7 +37,12 @@ if "--loglog" in sys.argv:
     ax.set_yscale("log")
 ax.set_xlabel(LABELS[columns[0]])
 ax.set_ylabel(LABELS[columns[1]])
-ax.legend()
+if len(files) > 4:
+    # Many curves fill the axes: the legend goes to their right.
+    fig.set_size_inches(9, 4)
+    ax.legend(fontsize="small", loc="upper left", bbox_to_anchor=(1.02, 1))
+else:
+    ax.legend()
 ax.grid(alpha=0.3, which="both")
 fig.tight_layout()
 fig.savefig(sys.argv[1], dpi=110)
