@@ -8,13 +8,16 @@
 
 #include <cmath>
 
+#include <algorithm>
+
 namespace levelsinter
 {
   template <int dim>
   std::array<TrilinosWrappers::MPI::Vector, dim>
-  nodal_normals(const LevelSetField<dim> &level_set,
-                const LevelSetFilter     &filter,
-                const bool                from_distance)
+  nodal_normals(const LevelSetField<dim>             &level_set,
+                const LevelSetFilter                 &filter,
+                const bool                            from_distance,
+                const std::vector<types::boundary_id> &symmetry_boundaries)
   {
     using Vector        = TrilinosWrappers::MPI::Vector;
     const auto    &dofs = level_set.dof_handler();
@@ -52,6 +55,25 @@ namespace levelsinter
         }
     for (auto &sum : sums)
       sum.compress(VectorOperation::add);
+    // Nodes on a symmetry face: the mirror cells' sum cancels the component
+    // across the face (ghost cells too, so that every owned node is seen).
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(symmetry_boundaries.begin(),
+                        symmetry_boundaries.end(),
+                        cell->face(f)->boundary_id()) !=
+                symmetry_boundaries.end())
+            {
+              const unsigned int axis = cell->face(f)->boundary_id() / 2;
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  const auto i = cell->face(f)->vertex_dof_index(v, 0);
+                  if (level_set.locally_owned().is_element(i))
+                    sums[axis](i) = 0;
+                }
+            }
 
     std::array<Vector, dim> owned_normals;
     for (unsigned int c = 0; c < dim; ++c)
@@ -79,7 +101,13 @@ namespace levelsinter
   }
 
   template std::array<TrilinosWrappers::MPI::Vector, 2>
-  nodal_normals<2>(const LevelSetField<2> &, const LevelSetFilter &, bool);
+  nodal_normals<2>(const LevelSetField<2> &,
+                   const LevelSetFilter &,
+                   bool,
+                   const std::vector<types::boundary_id> &);
   template std::array<TrilinosWrappers::MPI::Vector, 3>
-  nodal_normals<3>(const LevelSetField<3> &, const LevelSetFilter &, bool);
+  nodal_normals<3>(const LevelSetField<3> &,
+                   const LevelSetFilter &,
+                   bool,
+                   const std::vector<types::boundary_id> &);
 } // namespace levelsinter

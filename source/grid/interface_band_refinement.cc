@@ -35,10 +35,12 @@ namespace levelsinter
 
   template <int dim>
   InterfaceBandRefinement<dim>::InterfaceBandRefinement(
-    const SceneParameters::Refinement &settings,
-    const LevelSetFilter              &filter)
+    const SceneParameters::Refinement     &settings,
+    const LevelSetFilter                  &filter,
+    const std::vector<types::boundary_id> &symmetry_boundaries)
     : settings(settings)
     , filter(filter)
+    , symmetry_boundaries(symmetry_boundaries)
   {}
 
   template <int dim>
@@ -50,9 +52,13 @@ namespace levelsinter
 
   template <int dim>
   InterfaceBandRefinement<dim>::CellCurvature::CellCurvature(
-    const LevelSetField<dim> &level_set,
-    const LevelSetFilter     &filter)
-    : normals(nodal_normals(level_set, filter, /*from_distance=*/true))
+    const LevelSetField<dim>             &level_set,
+    const LevelSetFilter                 &filter,
+    const std::vector<types::boundary_id> &symmetry_boundaries)
+    : normals(nodal_normals(level_set,
+                            filter,
+                            /*from_distance=*/true,
+                            symmetry_boundaries))
     , fe_values(level_set.fe(), QMidpoint<dim>(), update_gradients)
     , local_normal(level_set.fe().dofs_per_cell)
   {}
@@ -95,7 +101,7 @@ namespace levelsinter
   InterfaceBandRefinement<dim>::curvature_resolution(
     const LevelSetField<dim> &level_set) const
   {
-    CellCurvature       curvature(level_set, filter);
+    CellCurvature curvature(level_set, filter, symmetry_boundaries);
     CurvatureResolution result;
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() &&
@@ -125,7 +131,7 @@ namespace levelsinter
     const unsigned int extra_levels = settings.curvature_levels;
     std::optional<CellCurvature> curvature;
     if (extra_levels > 0)
-      curvature.emplace(level_set, filter);
+      curvature.emplace(level_set, filter, symmetry_boundaries);
 
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
     bool                                 any_flag = false;

@@ -53,7 +53,9 @@ namespace levelsinter
     , correction_velocity(tria)
     , mechanisms(make_scene_mechanisms<dim>(scene, timer_output))
     , initial_distance(make_initial_signed_distance<dim>(scene))
-    , band_refinement(scene.refinement, level_set_filter)
+    , band_refinement(scene.refinement,
+                      level_set_filter,
+                      scene.viscous_flow.symmetry_boundaries)
     , transport(level_set_filter,
                 {scene.level_set.theta,
                  scene.level_set.solver_tolerance,

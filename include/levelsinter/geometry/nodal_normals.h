@@ -6,6 +6,7 @@
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <array>
+#include <vector>
 
 namespace levelsinter
 {
@@ -22,10 +23,17 @@ namespace levelsinter
    * curvature f''(d) tilts the interpolant's gradient by O((h/E)^2), which
    * does not vanish when E is a fixed number of cells (doc/numerics.md,
    * "Surface-tension forms").
+   *
+   * On the box faces listed in @p symmetry_boundaries (ids 0..2dim-1) the
+   * field continues as its mirror image: the mirror cells would add the
+   * reflected normals, so the component across the face is dropped there.
+   * Without it a kink on the face (a neck on its symmetry plane) is seen
+   * from one side only and reads as smooth.
    */
   template <int dim>
   std::array<TrilinosWrappers::MPI::Vector, dim>
-  nodal_normals(const LevelSetField<dim> &level_set,
-                const LevelSetFilter     &filter,
-                const bool                from_distance);
+  nodal_normals(const LevelSetField<dim>             &level_set,
+                const LevelSetFilter                 &filter,
+                const bool                            from_distance,
+                const std::vector<types::boundary_id> &symmetry_boundaries = {});
 } // namespace levelsinter

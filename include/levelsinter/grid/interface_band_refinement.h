@@ -44,8 +44,12 @@ namespace levelsinter
   class InterfaceBandRefinement
   {
   public:
-    InterfaceBandRefinement(const SceneParameters::Refinement &settings,
-                            const LevelSetFilter              &filter);
+    /** @p symmetry_boundaries: box faces across which the scene is
+     *  mirrored (the curvature reads a kink on them, nodal_normals()). */
+    InterfaceBandRefinement(
+      const SceneParameters::Refinement     &settings,
+      const LevelSetFilter                  &filter,
+      const std::vector<types::boundary_id> &symmetry_boundaries);
 
     /**
      * Set refine/coarsen flags from alpha. Returns true if any cell
@@ -84,8 +88,9 @@ namespace levelsinter
     class CellCurvature
     {
     public:
-      CellCurvature(const LevelSetField<dim> &level_set,
-                    const LevelSetFilter     &filter);
+      CellCurvature(const LevelSetField<dim>             &level_set,
+                    const LevelSetFilter                 &filter,
+                    const std::vector<types::boundary_id> &symmetry_boundaries);
 
       double
       operator()(const typename DoFHandler<dim>::active_cell_iterator &cell);
@@ -103,7 +108,8 @@ namespace levelsinter
     crossed(const typename DoFHandler<dim>::active_cell_iterator &cell,
             const LevelSetField<dim>                             &level_set);
 
-    SceneParameters::Refinement settings;
-    LevelSetFilter              filter;
+    SceneParameters::Refinement     settings;
+    LevelSetFilter                  filter;
+    std::vector<types::boundary_id> symmetry_boundaries;
   };
 } // namespace levelsinter
