@@ -11,7 +11,8 @@
 // the amplitude is measured after every step from the discrete interface
 // and the rate fitted by least squares to log|amplitude|. Settings: --mode
 // n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
-// v_s), --filter-thickness E (lower bound), --signs 2 (each case with
+// v_s), --filter-thickness E and --band-width W (lower bounds; the
+// defaults are 6 h and 4 h), --signs 2 (each case with
 // +delta and -delta, rate = their mean); limits --max-rate-error,
 // --max-volume-change, checked on the last run.
 //
@@ -131,6 +132,7 @@ namespace
     const double       time_fraction = setting(options, "time-fraction", 1);
     const bool         coupled       = setting(options, "coupled", 1) != 0;
     const double filter_thickness = setting(options, "filter-thickness", 0);
+    const double band_width       = setting(options, "band-width", 0);
     // --signs 2: every case also with -delta, and the rate is the mean of
     // the two. In 3D P_2^2 has a P_2 part, so the mode drives itself at
     // second order and the rate of +delta is off by O(delta) (measured
@@ -185,7 +187,8 @@ namespace
                  {"Mesh refinement/Maximum level", std::to_string(level)},
                  {"Mesh refinement/Minimum level",
                   std::to_string(level > 3 ? level - 3 : 0)},
-                 {"Mesh refinement/Band width", std::to_string(4 * h)},
+                 {"Mesh refinement/Band width",
+                  std::to_string(std::max(4 * h, band_width))},
                  {"Level set/Filter thickness",
                   std::to_string(std::max(6 * h, filter_thickness))},
                  {"Time/End time", Utilities::to_string(end_time, 16)},
