@@ -344,6 +344,14 @@ namespace
       return std::sqrt(2.) * R * (1 - m) / std::sqrt(1 + m * m);
     }
 
+    // d y_n / d(t gamma / (eta R)) at m, by central differences.
+    double
+    neck_speed(const double m) const
+    {
+      const double dm = 1e-4 * std::min(m, 1 - m);
+      return (neck(m + dm) - neck(m - dm)) / (time(m + dm) - time(m - dm));
+    }
+
     // m for a neck half-width y (y_n decreases monotonically with m).
     double
     m_of_neck(const double y) const
@@ -658,12 +666,17 @@ namespace
         columns.push_back(name.str());
       }
     columns.insert(columns.end(),
-                   {"fine_cells_step1", "max_fine_cell_distance"});
+                   {"fine_cells_step1",
+                    "max_fine_cell_distance",
+                    "initial_neck_speed_error"});
     Table                 table(run_columns(columns), options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
       {
         double       R = 0, tau0 = 0;
+        // The first Stokes solution, on Hopper's exact shape: the speed of
+        // the neck point (0, y0) against Hopper's dy/dt, free of transport.
+        double initial_neck_speed_error = 0;
         // Cells above the band's level (curvature refinement): how many after
         // the first step, and how far from the neck point (0, y_n) the
         // farthest of them came over the run, relative to R.
@@ -684,8 +697,13 @@ namespace
             const double m0 = exact.m_of_neck(std::sqrt(R * R - c * c));
             tau0            = exact.time(m0);
             sim.set_level_set(HopperLevelSet(exact, m0, sim.filter()));
+            const double gamma = scene.viscous_flow.surface_tension;
+            const double eta   = scene.viscous_flow.solid_viscosity;
+            const double exact_speed =
+              exact.neck_speed(m0) * gamma / (eta * R);
+            const Point<dim> initial_neck(0, exact.neck(m0));
             const unsigned int band_level = scene.refinement.max_level;
-            sim.set_step_observer([&, band_level, particles](
+            sim.set_step_observer([&, band_level, particles, exact_speed, initial_neck](
                                     const unsigned int        step,
                                     double,
                                     const LevelSetField<dim> &alpha) {
@@ -703,7 +721,13 @@ namespace
                   }
               const MPI_Comm comm = alpha.dof_handler().get_communicator();
               if (step == 1)
-                fine_cells_step1 = Utilities::MPI::sum(n_fine, comm);
+                {
+                  fine_cells_step1 = Utilities::MPI::sum(n_fine, comm);
+                  initial_neck_speed_error =
+                    sim.interface_velocity().value(initial_neck)[1] /
+                      exact_speed -
+                    1;
+                }
               max_fine_cell_distance =
                 std::max(max_fine_cell_distance,
                          Utilities::MPI::max(farthest, comm) / R);
@@ -754,7 +778,9 @@ namespace
           std::abs(run.metrics.at("volume_change").back())};
         values.insert(values.end(), early_errors.begin(), early_errors.end());
         values.insert(values.end(),
-                      {double(fine_cells_step1), max_fine_cell_distance});
+                      {double(fine_cells_step1),
+                       max_fine_cell_distance,
+                       initial_neck_speed_error});
         table.add(run_row(level, run, values));
       }
     check("finest max relative neck-radius error", table.finest("max_neck_error"),
@@ -772,6 +798,9 @@ namespace
     check("finest largest distance of those cells from the neck / R",
           table.finest("max_fine_cell_distance"), options,
           "max-fine-cell-distance");
+    check("finest |initial neck speed / Hopper's - 1|",
+          std::abs(table.finest("initial_neck_speed_error")), options,
+          "max-initial-neck-speed-error");
     check_iterations(runs, options);
   }
 

@@ -11,6 +11,7 @@
 #include <levelsinter/grid/interface_band_refinement.h>
 
 #include <algorithm>
+#include <optional>
 #include <cmath>
 
 namespace levelsinter
@@ -48,34 +49,83 @@ namespace levelsinter
   }
 
   template <int dim>
+  InterfaceBandRefinement<dim>::CellCurvature::CellCurvature(
+    const LevelSetField<dim> &level_set,
+    const LevelSetFilter     &filter)
+    : normals(nodal_normals(level_set, filter, /*from_distance=*/true))
+    , fe_values(level_set.fe(), QMidpoint<dim>(), update_gradients)
+    , local_normal(level_set.fe().dofs_per_cell)
+  {}
+
+  template <int dim>
+  double
+  InterfaceBandRefinement<dim>::CellCurvature::operator()(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    fe_values.reinit(cell);
+    Tensor<2, dim> gradient;
+    for (unsigned int c = 0; c < dim; ++c)
+      {
+        cell->get_dof_values(normals[c], local_normal);
+        for (unsigned int i = 0; i < local_normal.size(); ++i)
+          gradient[c] += local_normal[i] * fe_values.shape_grad(i, 0);
+      }
+    return gradient.norm();
+  }
+
+  template <int dim>
+  bool
+  InterfaceBandRefinement<dim>::crossed(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const LevelSetField<dim>                             &level_set)
+  {
+    std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
+    cell->get_dof_indices(indices);
+    bool negative = false, positive = false;
+    for (const auto i : indices)
+      {
+        negative = negative || level_set.alpha()(i) <= 0;
+        positive = positive || level_set.alpha()(i) >= 0;
+      }
+    return negative && positive;
+  }
+
+  template <int dim>
+  typename InterfaceBandRefinement<dim>::CurvatureResolution
+  InterfaceBandRefinement<dim>::curvature_resolution(
+    const LevelSetField<dim> &level_set) const
+  {
+    CellCurvature       curvature(level_set, filter);
+    CurvatureResolution result;
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          cell->level() >= int(finest_level()) && crossed(cell, level_set))
+        {
+          const double h = cell->diameter() / std::sqrt(double(dim));
+          const double kh = curvature(cell) * h;
+          result.max_curvature_times_h =
+            std::max(result.max_curvature_times_h, kh);
+          if (kh > 1)
+            ++result.under_resolved_cells;
+        }
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
+    result.under_resolved_cells =
+      Utilities::MPI::sum(result.under_resolved_cells, comm);
+    result.max_curvature_times_h =
+      Utilities::MPI::max(result.max_curvature_times_h, comm);
+    return result;
+  }
+
+  template <int dim>
   bool
   InterfaceBandRefinement<dim>::mark_cells(
     parallel::distributed::Triangulation<dim> &tria,
     const LevelSetField<dim>                  &level_set) const
   {
     const unsigned int extra_levels = settings.curvature_levels;
-    // Normals of the distance, not of alpha: the filter's curvature would
-    // tilt them (geometry/nodal_normals.h) and read as interface curvature.
-    std::array<TrilinosWrappers::MPI::Vector, dim> normals;
+    std::optional<CellCurvature> curvature;
     if (extra_levels > 0)
-      normals = nodal_normals(level_set, filter, /*from_distance=*/true);
-    const QMidpoint<dim> centre;
-    FEValues<dim>  fe_values(level_set.fe(), centre, update_gradients);
-    dealii::Vector<double> local_normal(level_set.fe().dofs_per_cell);
-    // sqrt(k1^2 + k2^2) at the cell centre: the Frobenius norm of the
-    // gradient of the Q1-interpolated nodal normals. In 2D it is |kappa|;
-    // in 3D it does not cancel on a saddle-shaped neck as div N would.
-    const auto curvature = [&](const auto &cell) {
-      fe_values.reinit(cell);
-      Tensor<2, dim> gradient;
-      for (unsigned int c = 0; c < dim; ++c)
-        {
-          cell->get_dof_values(normals[c], local_normal);
-          for (unsigned int i = 0; i < local_normal.size(); ++i)
-            gradient[c] += local_normal[i] * fe_values.shape_grad(i, 0);
-        }
-      return gradient.norm();
-    };
+      curvature.emplace(level_set, filter);
 
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
     bool                                 any_flag = false;
@@ -83,18 +133,12 @@ namespace levelsinter
       if (cell->is_locally_owned())
         {
           cell->get_dof_indices(indices);
-          double min_alpha = std::numeric_limits<double>::max();
-          double max_alpha = -min_alpha;
-          double nearest   = min_alpha;
+          double nearest = std::numeric_limits<double>::max();
           for (const auto i : indices)
-            {
-              const double a = level_set.alpha()(i);
-              min_alpha      = std::min(min_alpha, a);
-              max_alpha      = std::max(max_alpha, a);
-              nearest = std::min(nearest, std::abs(filter.distance(a)));
-            }
-          const bool crossed = min_alpha <= 0 && max_alpha >= 0;
-          const bool in_band = crossed || nearest <= settings.band_width;
+            nearest = std::min(nearest,
+                               std::abs(filter.distance(level_set.alpha()(i))));
+          const bool cut     = crossed(cell, level_set);
+          const bool in_band = cut || nearest <= settings.band_width;
           const unsigned int level = cell->level();
           auto tria_cell = typename Triangulation<dim>::active_cell_iterator(
             &tria, cell->level(), cell->index());
@@ -102,7 +146,7 @@ namespace levelsinter
           if (in_band && extra_levels > 0 && level >= settings.max_level)
             {
               // Extra level j only within band_width / 2^j of the interface.
-              const double distance  = crossed ? 0. : nearest;
+              const double distance  = cut ? 0. : nearest;
               unsigned int max_extra = 0;
               while (max_extra < extra_levels &&
                      distance <=
@@ -111,7 +155,7 @@ namespace levelsinter
               const unsigned int extra = level - settings.max_level;
               const double       h = cell->diameter() / std::sqrt(double(dim));
               const double       resolution =
-                settings.cells_per_curvature_radius * curvature(cell) * h;
+                settings.cells_per_curvature_radius * (*curvature)(cell) * h;
               refine  = extra < max_extra && resolution > 1;
               coarsen = extra > 0 && (extra > max_extra || 4 * resolution <= 1);
             }

@@ -41,7 +41,7 @@ namespace levelsinter
                     parameters.surface_tension_form == "sharp" ?
                                                                Form::sharp :
                                                                Form::csf_curvature;
-    settings.interface_half_width   = parameters.interface_half_width * h_min;
+    settings.interface_half_width_cells = parameters.interface_half_width;
     settings.stabilisation_constant = parameters.stabilisation_constant;
     settings.external_pressure      = parameters.external_pressure;
     settings.symmetry_boundaries    = parameters.symmetry_boundaries;

@@ -69,7 +69,9 @@ namespace levelsinter
                         "1.5",
                         Patterns::Double(0),
                         "E of the smoothed Heaviside and Dirac (Eq. 102-104), "
-                        "in finest-cell sizes h_min.");
+                        "in cell sizes: E = this x h_K in each cell K, so "
+                        "the jump spans the same number of cells on the "
+                        "band and on cells refined further at necks.");
       prm.declare_entry("Stabilisation constant",
                         "0.1",
                         Patterns::Double(0),

@@ -9,6 +9,7 @@
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -143,6 +144,31 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  Simulation<dim>::check_curvature_resolution(const double t)
+  {
+    if (std::none_of(mechanisms.begin(), mechanisms.end(), [](const auto &m) {
+          return m->curvature_driven();
+        }))
+      return;
+    const auto resolution = band_refinement.curvature_resolution(alpha);
+    if (resolution.under_resolved_cells > 0 && under_resolved_cells == 0)
+      pcout << "warning: t = " << t << ": " << resolution.under_resolved_cells
+            << " interface cells at the finest level are larger than the "
+               "local curvature radius (largest curvature x h = "
+            << resolution.max_curvature_times_h
+            << "); the curvature-driven speed is too low there. More "
+               "'Mesh refinement/Curvature refinement levels' resolve it."
+            << std::endl;
+    else if (resolution.under_resolved_cells == 0 && under_resolved_cells > 0)
+      pcout << "t = " << t << ": the interface curvature is resolved again."
+            << std::endl;
+    if (resolution.under_resolved_cells > 0)
+      summary.curvature_under_resolved_until = t;
+    under_resolved_cells = resolution.under_resolved_cells;
+  }
+
+  template <int dim>
   double
   Simulation<dim>::speed_near_interface() const
   {
@@ -239,6 +265,13 @@ namespace levelsinter
                                    velocity.max_norm(),
                                    double(last_iterations),
                                    wall};
+        const bool curvature_driven =
+          std::any_of(mechanisms.begin(), mechanisms.end(), [](const auto &m) {
+            return m->curvature_driven();
+          });
+        if (curvature_driven)
+          row.push_back(under_resolved_cells);
+        const std::size_t columns_before_neck = row.size();
         // The neck of two particles; in a packing the smallest neck over
         // the pairs that overlap at t = 0.
         const auto &particles = scene.geometry.particles;
@@ -249,7 +282,7 @@ namespace levelsinter
             if (!std::isnan(neck))
               row.push_back(neck);
           }
-        const bool has_neck = row.size() > 11;
+        const bool has_neck = row.size() > columns_before_neck;
         for (const auto &mechanism : mechanisms)
           for (const double value : mechanism->metric_values())
             row.push_back(value);
@@ -266,6 +299,8 @@ namespace levelsinter
                                                 "max_velocity",
                                                 "transport_iterations",
                                                 "wall_time"};
+            if (curvature_driven)
+              columns.push_back("under_resolved_curvature_cells");
             if (has_neck)
               columns.push_back("neck_radius");
             for (const auto &mechanism : mechanisms)
@@ -377,6 +412,7 @@ namespace levelsinter
 
     double       t    = 0;
     unsigned int step = 0;
+    check_curvature_resolution(t);
     compute_interface_velocity(t, 0);
     record(step, t, 0, scene.time.end_time == 0);
 
@@ -386,7 +422,10 @@ namespace levelsinter
       {
         // 0. Keep the refined band on the interface.
         if (step > 0 && step % scene.refinement.adapt_interval == 0)
-          adapt_mesh();
+          {
+            adapt_mesh();
+            check_curvature_resolution(t);
+          }
 
         // 1.-2. Interface velocity, transport with convective
         //       reinitialisation (Eq. 68), corrections (v^c, Eq. 113-116);
@@ -412,6 +451,11 @@ namespace levelsinter
         .count();
     summary.cpu_time = cpu_timer.cpu_time();
     summary.mean_iterations = step > 0 ? double(total_iterations) / step : 0;
+    if (summary.curvature_under_resolved_until >= 0)
+      pcout << "note: the interface curvature was under-resolved at the "
+               "finest level until t = "
+            << summary.curvature_under_resolved_until
+            << " (metrics.csv: under_resolved_curvature_cells)." << std::endl;
     return summary;
   }
 

@@ -2,9 +2,16 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
 #include <levelsinter/scene/scene_parameters.h>
+
+#include <array>
 
 namespace levelsinter
 {
@@ -52,7 +59,50 @@ namespace levelsinter
     unsigned int
     finest_level() const;
 
+    /**
+     * Interface cells at the finest level whose curvature radius is smaller
+     * than the cell (h |grad N| > 1): there a curvature-driven speed is too
+     * low, since the kink of the Q1 interface stands in for the unresolved
+     * radius (doc/validation.md, "Neck speed on Hopper's exact shape").
+     */
+    struct CurvatureResolution
+    {
+      unsigned int under_resolved_cells  = 0;
+      double       max_curvature_times_h = 0;
+    };
+
+    /** The above over all ranks (every process gets the same result). */
+    CurvatureResolution
+    curvature_resolution(const LevelSetField<dim> &level_set) const;
+
   private:
+    /**
+     * |grad N| at a cell's centre, N the Q1-interpolated nodal normals of
+     * the distance: sqrt(k1^2 + k2^2), |kappa| in 2D; unlike div N it does
+     * not cancel on a saddle-shaped neck.
+     */
+    class CellCurvature
+    {
+    public:
+      CellCurvature(const LevelSetField<dim> &level_set,
+                    const LevelSetFilter     &filter);
+
+      double
+      operator()(const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    private:
+      // Of the distance, not of alpha: the filter's curvature would tilt
+      // them (geometry/nodal_normals.h) and read as interface curvature.
+      std::array<TrilinosWrappers::MPI::Vector, dim> normals;
+      FEValues<dim>                                  fe_values;
+      dealii::Vector<double>                         local_normal;
+    };
+
+    /** Whether the interface crosses the cell (alpha changes sign). */
+    static bool
+    crossed(const typename DoFHandler<dim>::active_cell_iterator &cell,
+            const LevelSetField<dim>                             &level_set);
+
     SceneParameters::Refinement settings;
     LevelSetFilter              filter;
   };

@@ -68,7 +68,8 @@ namespace levelsinter
     {
       double             surface_tension      = 0;
       SurfaceTensionForm form                 = SurfaceTensionForm::sharp;
-      double             interface_half_width = 0; // E of Eq. 102-104
+      /** E of Eq. 102-104 in cell sizes: E_K = this x h_K in cell K. */
+      double             interface_half_width_cells = 1.5;
       double             stabilisation_constant = 1; // c_tau
       double             external_pressure      = 0; // on the free faces
       /** Box faces (colorized ids 0..2dim-1) with zero normal velocity. */

@@ -71,6 +71,17 @@ namespace levelsinter
     check_step(const LevelSetField<dim> &)
     {}
 
+    /**
+     * True if the velocity is driven by the interface's curvature (surface
+     * tension, surface diffusion): the time loop then reports where the
+     * mesh under-resolves the curvature.
+     */
+    virtual bool
+    curvature_driven() const
+    {
+      return false;
+    }
+
     /** Extra metrics.csv columns and their values after the last step. */
     virtual std::vector<std::string>
     metric_names() const

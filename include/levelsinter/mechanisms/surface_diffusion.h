@@ -32,6 +32,12 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    bool
+    curvature_driven() const override
+    {
+      return true;
+    }
+
     std::vector<std::string>
     metric_names() const override;
 

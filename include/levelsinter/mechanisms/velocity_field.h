@@ -90,6 +90,14 @@ namespace levelsinter
     max_norm() const;
 
     /**
+     * The velocity at @p point, on every rank (the owner of the cell that
+     * holds it evaluates the Q1 field; the value is then shared). Throws if
+     * no cell holds the point.
+     */
+    Tensor<1, dim>
+    value(const Point<dim> &point) const;
+
+    /**
      * max of |v| over the nodes of cells where |alpha| is below
      * @p saturation, i.e. near the interface: the speed that limits the
      * time step (far away alpha is constant and any speed is harmless).

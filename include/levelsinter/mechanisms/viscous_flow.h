@@ -42,6 +42,12 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    bool
+    curvature_driven() const override
+    {
+      return true;
+    }
+
     /**
      * Explicit capillary limit dt <= c eta_s h_min / gamma; none when the
      * surface tension is semi-implicit.

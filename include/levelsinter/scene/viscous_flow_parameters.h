@@ -28,7 +28,7 @@ namespace levelsinter
     double      fluid_compressibility = 1;
     std::string surface_tension_form; // csf, sharp or csf-curvature
     bool        semi_implicit_surface_tension = false;
-    double      interface_half_width  = 1.5; // in finest cells
+    double      interface_half_width  = 1.5; // in cell sizes h_K
     double      stabilisation_constant = 0.1;
     double      external_pressure      = 0;
     std::vector<types::boundary_id> symmetry_boundaries;

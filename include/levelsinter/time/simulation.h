@@ -44,6 +44,9 @@ namespace levelsinter
       double       mean_iterations      = 0;
       unsigned int rejected_steps       = 0; // retried with a smaller dt
       double       initial_solid_volume = 0;
+      /** Last time the curvature was under-resolved (-1: never; only for
+       *  curvature-driven mechanisms). */
+      double curvature_under_resolved_until = -1;
     };
 
     Simulation(const SceneParameters &scene,
@@ -83,6 +86,13 @@ namespace levelsinter
       return alpha;
     }
 
+    /** The interface velocity of the last step (the sum over mechanisms). */
+    const VelocityField<dim> &
+    interface_velocity() const
+    {
+      return velocity;
+    }
+
     const LevelSetFilter &
     filter() const
     {
@@ -107,6 +117,8 @@ namespace levelsinter
     refine_initial_mesh();
     void
     adapt_mesh();
+    void
+    check_curvature_resolution(const double t);
     double
     choose_time_step(const double t) const;
     double
@@ -140,6 +152,9 @@ namespace levelsinter
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;
+    // Interface cells at the finest level that under-resolve the curvature,
+    // at the last check (after each adaptation).
+    unsigned int under_resolved_cells = 0;
     Summary                                   summary;
     unsigned int                              total_iterations = 0;
     unsigned int                              last_iterations  = 0;
