@@ -152,7 +152,10 @@ namespace levelsinter
         }))
       return;
     const auto resolution = band_refinement.curvature_resolution(alpha);
-    if (resolution.under_resolved_cells > 0 && under_resolved_cells == 0)
+    // Said once each way: near the threshold the count can flicker between
+    // adaptations; metrics.csv and the summary keep the whole history.
+    const bool first_time = summary.curvature_under_resolved_until < 0;
+    if (resolution.under_resolved_cells > 0 && first_time)
       pcout << "warning: t = " << t << ": " << resolution.under_resolved_cells
             << " interface cells at the finest level are larger than the "
                "local curvature radius (largest curvature x h = "
@@ -160,9 +163,13 @@ namespace levelsinter
             << "); the curvature-driven speed is too low there. More "
                "'Mesh refinement/Curvature refinement levels' resolve it."
             << std::endl;
-    else if (resolution.under_resolved_cells == 0 && under_resolved_cells > 0)
-      pcout << "t = " << t << ": the interface curvature is resolved again."
-            << std::endl;
+    else if (resolution.under_resolved_cells == 0 && under_resolved_cells > 0 &&
+             !resolved_again_reported)
+      {
+        pcout << "t = " << t << ": the interface curvature is resolved again."
+              << std::endl;
+        resolved_again_reported = true;
+      }
     if (resolution.under_resolved_cells > 0)
       summary.curvature_under_resolved_until = t;
     under_resolved_cells = resolution.under_resolved_cells;

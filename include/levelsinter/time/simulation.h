@@ -154,7 +154,8 @@ namespace levelsinter
     double                                    interface_speed = 0;
     // Interface cells at the finest level that under-resolve the curvature,
     // at the last check (after each adaptation).
-    unsigned int under_resolved_cells = 0;
+    unsigned int under_resolved_cells    = 0;
+    bool         resolved_again_reported = false;
     Summary                                   summary;
     unsigned int                              total_iterations = 0;
     unsigned int                              last_iterations  = 0;
