@@ -11,7 +11,8 @@
 // the amplitude is measured after every step from the discrete interface
 // and the rate fitted by least squares to log|amplitude|. Settings: --mode
 // n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
-// v_s), --filter-thickness E (lower bound), --signs 2 (each case with
+// v_s), --filter-thickness E and --band-width W (lower bounds; the
+// defaults are 6 h and 4 h), --signs 2 (each case with
 // +delta and -delta, rate = their mean); limits --max-rate-error,
 // --max-volume-change, checked on the last run.
 //
@@ -23,12 +24,15 @@
 // 2 R1 R2 / (R1 + R2) (paper Fig. 27; a packing: the mean radius),
 // t* = C_s t / Rbar^4, the solid-volume change and the change of the
 // centre distances read off the level set (rays from each centre away
-// from its neighbours, see sample() in neck()). It fits
+// from its neighbours, see sample() in neck()) and the change of the
+// far-end-to-far-end length (length_change, the exits along the outward
+// directions). It fits
 // x / Rbar = A t*^(1/n) over the samples with --fit-min <= x / Rbar <=
 // --fit-max (0.05, 0.3: the Nichols-Mullins window) and over all samples
 // with x / Rbar >= --fit-min, and prints the CPU time of each timer
 // section. Limits: --min-neck-growth (x_end / x_0), --max-volume-change,
-// --max-centre-shift (|d - d0| / d0), --max-neck-offset (two grains:
+// --max-centre-shift (|d - d0| / d0), --max-length-change (|L - L0| /
+// L0), --max-neck-offset (two grains:
 // distance of the initial neck from the plane where the spheres meet,
 // relative to Rbar).
 //
@@ -128,6 +132,7 @@ namespace
     const double       time_fraction = setting(options, "time-fraction", 1);
     const bool         coupled       = setting(options, "coupled", 1) != 0;
     const double filter_thickness = setting(options, "filter-thickness", 0);
+    const double band_width       = setting(options, "band-width", 0);
     // --signs 2: every case also with -delta, and the rate is the mean of
     // the two. In 3D P_2^2 has a P_2 part, so the mode drives itself at
     // second order and the rate of +delta is off by O(delta) (measured
@@ -182,7 +187,8 @@ namespace
                  {"Mesh refinement/Maximum level", std::to_string(level)},
                  {"Mesh refinement/Minimum level",
                   std::to_string(level > 3 ? level - 3 : 0)},
-                 {"Mesh refinement/Band width", std::to_string(4 * h)},
+                 {"Mesh refinement/Band width",
+                  std::to_string(std::max(4 * h, band_width))},
                  {"Level set/Filter thickness",
                   std::to_string(std::max(6 * h, filter_thickness))},
                  {"Time/End time", Utilities::to_string(end_time, 16)},
@@ -397,12 +403,13 @@ namespace
 
     study::Table table({"step", "t", "t_star", "dofs", "neck", "neck_over_R",
                         "neck_position", "volume_change",
-                        "centre_distance_change", "cpu_time"},
+                        "centre_distance_change", "length_change",
+                        "cpu_time"},
                        options.csv);
     Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
     simulation.initialise();
     const Timer cpu_timer(MPI_COMM_WORLD); // CPU summed over the ranks
-    double      volume0 = 0, shift0 = 0;
+    double      volume0 = 0, shift0 = 0, length0 = 0;
     std::vector<double> log_t, log_x, x_over_r;
     unsigned int        last_sample = 0;
     auto sample = [&](const unsigned int step, const double t,
@@ -425,7 +432,12 @@ namespace
       // Two grains: their approach -(shift1 + shift2) / d0 is the change
       // of the centre distance; a packing: -2 (mean shift) / d0, the
       // change of a pair's distance if both moved along its axis.
-      double shift = 0;
+      // The far ends alone (the exits along u) give the length of a pair
+      // from far end to far end, d + e1 + e2 (a packing: d0 + 2 mean e).
+      // It needs no assumption on the shape near the necks, but reads any
+      // change of the radius: measured with v^c, which holds it.
+      double shift = 0, far_end = 0;
+      unsigned int n_free = 0;
       for (unsigned int i = 0; i < particles.size(); ++i)
         if (!directions[i].empty())
           {
@@ -435,11 +447,15 @@ namespace
             for (unsigned int e = 1; e < exits.size(); ++e)
               across += exits[e] / (exits.size() - 1);
             shift += (across - exits[0]) * (pair ? 1. : 2. / particles.size());
+            far_end += exits[0];
+            ++n_free;
           }
+      const double length = d0 + 2 * far_end / std::max(n_free, 1u);
       if (step == 0)
         {
           volume0 = volume;
           shift0  = shift;
+          length0 = length;
         }
       const double t_star = t * t_star_per_t;
       if (t_star > 0)
@@ -457,6 +473,7 @@ namespace
                  neck.position,
                  (volume - volume0) / volume0,
                  -(shift - shift0) / d0,
+                 (length - length0) / length0,
                  cpu_timer.cpu_time()});
     };
     sample(0, 0, simulation.level_set());
@@ -515,6 +532,9 @@ namespace
     study::check("|centre distance change| / d0",
                  std::abs(table.finest("centre_distance_change")), options,
                  "max-centre-shift");
+    study::check("|length change| / L0",
+                 std::abs(table.finest("length_change")), options,
+                 "max-length-change");
     study::check("initial neck offset from the junction plane / Rbar",
                  offset0, options, "max-neck-offset");
   }
