@@ -82,11 +82,9 @@ namespace levelsinter
   template <int dim>
   bool
   InterfaceBandRefinement<dim>::crossed(
-    const typename DoFHandler<dim>::active_cell_iterator &cell,
-    const LevelSetField<dim>                             &level_set)
+    const std::vector<types::global_dof_index> &indices,
+    const LevelSetField<dim>                   &level_set)
   {
-    std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
-    cell->get_dof_indices(indices);
     bool negative = false, positive = false;
     for (const auto i : indices)
       {
@@ -102,11 +100,14 @@ namespace levelsinter
     const LevelSetField<dim> &level_set) const
   {
     CellCurvature curvature(level_set, filter, symmetry_boundaries);
-    CurvatureResolution result;
+    CurvatureResolution                  result;
+    std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          cell->level() >= int(finest_level()) && crossed(cell, level_set))
+      if (cell->is_locally_owned() && cell->level() >= int(finest_level()))
         {
+          cell->get_dof_indices(indices);
+          if (!crossed(indices, level_set))
+            continue;
           const double h = cell->diameter() / std::sqrt(double(dim));
           const double kh = curvature(cell) * h;
           result.max_curvature_times_h =
@@ -143,7 +144,7 @@ namespace levelsinter
           for (const auto i : indices)
             nearest = std::min(nearest,
                                std::abs(filter.distance(level_set.alpha()(i))));
-          const bool cut     = crossed(cell, level_set);
+          const bool cut     = crossed(indices, level_set);
           const bool in_band = cut || nearest <= settings.band_width;
           const unsigned int level = cell->level();
           auto tria_cell = typename Triangulation<dim>::active_cell_iterator(

@@ -11,6 +11,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/grid/same_cell.h>
 #include <levelsinter/level_set/convective_reinitialization.h>
 
 #include <algorithm>
@@ -97,11 +98,7 @@ namespace levelsinter
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const typename DoFHandler<dim>::active_cell_iterator velocity_cell(
-            &cell->get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &velocity.dof_handler());
+          const auto velocity_cell = same_cell(cell, velocity.dof_handler());
           fe_values.reinit(cell);
           velocity_values.reinit(velocity_cell);
           fe_values.get_function_values(level_set.alpha(), alpha);

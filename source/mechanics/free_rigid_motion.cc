@@ -8,6 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <levelsinter/grid/same_cell.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 
 namespace levelsinter
@@ -104,11 +105,7 @@ namespace levelsinter
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const typename DoFHandler<dim>::active_cell_iterator alpha_cell(
-            &dofs.get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &level_set.dof_handler());
+          const auto alpha_cell = same_cell(cell, level_set.dof_handler());
           alpha_values.reinit(alpha_cell);
           alpha_values.get_function_values(level_set.alpha(), alpha_q);
           stokes_values.reinit(cell);

@@ -22,6 +22,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/grid/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
@@ -333,11 +334,7 @@ namespace levelsinter
           cell_schur  = 0;
           cell_rhs    = 0;
           values.reinit(cell);
-          const typename DoFHandler<dim>::active_cell_iterator ls_cell(
-            &dofs.get_triangulation(),
-            cell->level(),
-            cell->index(),
-            &alpha.dof_handler());
+          const auto ls_cell = same_cell(cell, alpha.dof_handler());
           level_set_values.reinit(ls_cell);
           level_set_values.get_function_values(alpha.alpha(), alpha_q);
           level_set_values.get_function_gradients(alpha.alpha(),

@@ -11,6 +11,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/grid/same_cell.h>
 #include <levelsinter/mechanisms/velocity_field.h>
 
 #include <cmath>
@@ -80,11 +81,7 @@ namespace levelsinter
       if (cell->is_locally_owned())
         for (const unsigned int v : cell->vertex_indices())
           {
-            const typename DoFHandler<dim>::active_cell_iterator source_cell(
-              &cell->get_triangulation(),
-              cell->level(),
-              cell->index(),
-              &source_dofs);
+            const auto source_cell = same_cell(cell, source_dofs);
             const Tensor<1, dim> value = vertex_value(source_cell, v);
             for (unsigned int c = 0; c < dim; ++c)
               {
@@ -115,8 +112,7 @@ namespace levelsinter
     std::vector<types::global_dof_index> indices(
       level_set_dofs.get_fe().dofs_per_cell);
     return max_norm_over_cells([&](const auto &cell) {
-      const typename DoFHandler<dim>::active_cell_iterator ls_cell(
-        &dofs.get_triangulation(), cell->level(), cell->index(), &level_set_dofs);
+      const auto ls_cell = same_cell(cell, level_set_dofs);
       ls_cell->get_dof_indices(indices);
       for (const auto i : indices)
         if (std::abs(alpha(i)) < saturation)

@@ -52,6 +52,10 @@ namespace levelsinter
     , velocity(tria)
     , correction_velocity(tria)
     , mechanisms(make_scene_mechanisms<dim>(scene, timer_output))
+    , curvature_driven(
+        std::any_of(mechanisms.begin(), mechanisms.end(), [](const auto &m) {
+          return m->curvature_driven();
+        }))
     , initial_distance(make_initial_signed_distance<dim>(scene))
     , band_refinement(scene.refinement,
                       level_set_filter,
@@ -149,9 +153,7 @@ namespace levelsinter
   void
   Simulation<dim>::check_curvature_resolution(const double t)
   {
-    if (std::none_of(mechanisms.begin(), mechanisms.end(), [](const auto &m) {
-          return m->curvature_driven();
-        }))
+    if (!curvature_driven)
       return;
     const auto resolution = band_refinement.curvature_resolution(alpha);
     // Said once each way: near the threshold the count can flicker between
@@ -274,10 +276,6 @@ namespace levelsinter
                                    velocity.max_norm(),
                                    double(last_iterations),
                                    wall};
-        const bool curvature_driven =
-          std::any_of(mechanisms.begin(), mechanisms.end(), [](const auto &m) {
-            return m->curvature_driven();
-          });
         if (curvature_driven)
           row.push_back(under_resolved_cells);
         const std::size_t columns_before_neck = row.size();

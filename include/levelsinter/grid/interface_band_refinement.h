@@ -103,10 +103,11 @@ namespace levelsinter
       dealii::Vector<double>                         local_normal;
     };
 
-    /** Whether the interface crosses the cell (alpha changes sign). */
+    /** Whether the interface crosses a cell with level-set DoFs @p indices
+     *  (alpha changes sign). */
     static bool
-    crossed(const typename DoFHandler<dim>::active_cell_iterator &cell,
-            const LevelSetField<dim>                             &level_set);
+    crossed(const std::vector<types::global_dof_index> &indices,
+            const LevelSetField<dim>                   &level_set);
 
     SceneParameters::Refinement     settings;
     LevelSetFilter                  filter;

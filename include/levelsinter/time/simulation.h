@@ -145,6 +145,8 @@ namespace levelsinter
     VelocityField<dim>                        velocity;
     VelocityField<dim>                        correction_velocity;
     std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
+    // Some mechanism is driven by the curvature: its resolution is checked.
+    bool curvature_driven;
     std::unique_ptr<Function<dim>>            initial_distance;
     InterfaceBandRefinement<dim>              band_refinement;
     ConvectiveReinitialization<dim>           transport;
