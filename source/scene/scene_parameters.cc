@@ -242,6 +242,18 @@ namespace levelsinter
                         Patterns::Double(0),
                         "Courant number max|v| dt / h_min; 0 disables the "
                         "CFL limit (then 'Time step' must be set).");
+      prm.declare_entry(
+        "Relative time step",
+        "0",
+        Patterns::Double(0),
+        "0 = off. When positive (r), the step is max('Time step', r t): "
+        "once r t exceeds 'Time step', which is then the first and smallest "
+        "step, the steps grow in proportion to the time reached (about "
+        "2.3 / r steps per decade of t). For flows whose own time scale is t, "
+        "such as an early sintering neck x ~ t^(1/n), which then grows by "
+        "the same fraction every step. The CFL number and the mechanisms' "
+        "limits still cap the step: set CFL number = 0 where the largest "
+        "speed is not the neck's.");
       prm.declare_entry("Maximum steps",
                         "0",
                         Patterns::Integer(0),
@@ -503,9 +515,14 @@ namespace levelsinter
     time.time_step = prm.get_double("Time step");
     time.cfl       = prm.get_double("CFL number");
     time.max_steps = prm.get_integer("Maximum steps");
+    time.relative_time_step = prm.get_double("Relative time step");
     if (time.time_step == 0 && time.cfl == 0)
       fail("Time/CFL number",
            "a CFL number or a fixed 'Time step' must be given (both are 0)");
+    if (time.relative_time_step > 0 && time.time_step == 0)
+      fail("Time/Time step",
+           "must be positive with a Relative time step: it is the first "
+           "step, taken at t = 0 where r t is 0");
     prm.leave_subsection();
 
     viscous_flow.parse_parameters(prm, d);

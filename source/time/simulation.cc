@@ -222,8 +222,11 @@ namespace levelsinter
   Simulation<dim>::choose_time_step(const double t) const
   {
     double dt = std::numeric_limits<double>::max();
+    // A relative step r grows the step with t: a neck x ~ t^(1/n) has no
+    // time scale but t itself, so a fixed step is too coarse early and
+    // wasteful late.
     if (scene.time.time_step > 0)
-      dt = scene.time.time_step;
+      dt = std::max(scene.time.time_step, scene.time.relative_time_step * t);
     for (const auto &mechanism : mechanisms)
       dt = std::min(dt, mechanism->time_step_limit(alpha));
     // The speed of the last velocity computed: the previous step's.

@@ -87,6 +87,8 @@ namespace levelsinter
       double       time_step = 0; // 0: from the CFL number
       double       cfl       = 0.5;
       unsigned int max_steps = 0; // 0: unlimited
+      // r > 0: the step is max(time_step, r t) (before the caps).
+      double relative_time_step = 0;
     } time;
 
     struct Velocity
