@@ -9,7 +9,8 @@ Each CSV is written by `surface_diffusion_validation neck ... --csv`
 interpolation in log x against log t*; '-' outside the run), the relative
 difference to the previous run at each T, and the least-squares fit
 x/R = A t*^(1/n) over the samples with LO <= x/R <= HI (default 0.05,
-0.3: the Nichols-Mullins window).
+0.3: the Nichols-Mullins window). Samples with x = 0 (a neck that
+closed) are left out.
 """
 import csv
 import math
@@ -63,7 +64,9 @@ print("t*: " + " / ".join(f"{v:g}" for v in t_stars))
 previous = None
 for item in args:
     label, path = item.rsplit("=", 1)
-    rows = [r for r in csv.DictReader(open(path)) if float(r["t_star"]) > 0]
+    # t* = 0 and a closed neck (x = 0) have no logarithm.
+    rows = [r for r in csv.DictReader(open(path))
+            if float(r["t_star"]) > 0 and float(r["neck_over_R"]) > 0]
     t = [float(r["t_star"]) for r in rows]
     x = [float(r["neck_over_R"]) for r in rows]
     values = [at(t, x, v) for v in t_stars]
