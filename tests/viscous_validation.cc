@@ -273,6 +273,7 @@ namespace
 
           ViscousFlow<dim>   flow(scene.viscous_flow,
                                 simulation.filter(),
+                                scene.refinement.max_level,
                                 simulation.timer());
           VelocityField<dim> velocity(simulation.triangulation());
           velocity.setup_dofs();

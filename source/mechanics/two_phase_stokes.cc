@@ -346,11 +346,20 @@ namespace levelsinter
                                                       grad_heaviside_q);
             }
           const double h = cell->diameter() / std::sqrt(double(dim));
-          // The smoothing follows the cell: a jump narrower than the cell
-          // would be sampled, not integrated, by the 3-point Gauss rule
-          // (measured with E tied to h_min under curvature refinement: the
-          // area drift grew 2.8-fold, doc/validation.md).
-          const double            E = settings.interface_half_width_cells * h;
+          // The smoothing follows the cell where it is refined beyond the
+          // band: a jump narrower than the cell would be sampled, not
+          // integrated, by the 3-point Gauss rule (measured with E tied to
+          // h_min under curvature refinement: the area drift grew 2.8-fold,
+          // doc/validation.md). It does not widen on cells coarser than the
+          // band: the filtered level set carries the distance only a few
+          // band cells out (the sine filter saturates at 2 E_f / pi), so a
+          // wider ramp there would mix the phases far from the interface.
+          const unsigned int coarser =
+            settings.band_level > static_cast<unsigned int>(cell->level()) ?
+              settings.band_level - cell->level() :
+              0;
+          const double E =
+            settings.interface_half_width_cells * h / (1u << coarser);
           const SmoothedHeaviside heaviside(E);
           // The Schur approximation weighs the pressure mass with the
           // cell-mean viscosity (Grinevich & Olshanskii 2009): with the

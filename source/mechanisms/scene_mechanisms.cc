@@ -18,7 +18,10 @@ namespace levelsinter
                                 scene.level_set.filter_thickness);
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
-        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow, filter, timer));
+        std::make_unique<ViscousFlow<dim>>(scene.viscous_flow,
+                                           filter,
+                                           scene.refinement.max_level,
+                                           timer));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));

@@ -18,9 +18,11 @@ namespace levelsinter
   template <int dim>
   ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters,
                                 const LevelSetFilter        &filter,
+                                const unsigned int           band_level,
                                 TimerOutput                 &timer)
     : parameters(parameters)
     , filter(filter)
+    , band_level(band_level)
     , timer(timer)
     , phases(parameters.solid_viscosity,
              parameters.fluid_viscosity,
@@ -42,6 +44,7 @@ namespace levelsinter
                                                                Form::sharp :
                                                                Form::csf_curvature;
     settings.interface_half_width_cells = parameters.interface_half_width;
+    settings.band_level                 = band_level;
     settings.stabilisation_constant = parameters.stabilisation_constant;
     settings.external_pressure      = parameters.external_pressure;
     settings.symmetry_boundaries    = parameters.symmetry_boundaries;

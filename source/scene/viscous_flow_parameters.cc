@@ -71,7 +71,8 @@ namespace levelsinter
                         "E of the smoothed Heaviside and Dirac (Eq. 102-104), "
                         "in cell sizes: E = this x h_K in each cell K, so "
                         "the jump spans the same number of cells on the "
-                        "band and on cells refined further at necks.");
+                        "band and on cells refined further at necks; cells "
+                        "coarser than the band use the band cells' size.");
       prm.declare_entry("Stabilisation constant",
                         "0.1",
                         Patterns::Double(0),

@@ -68,8 +68,14 @@ namespace levelsinter
     {
       double             surface_tension      = 0;
       SurfaceTensionForm form                 = SurfaceTensionForm::sharp;
-      /** E of Eq. 102-104 in cell sizes: E_K = this x h_K in cell K. */
+      /**
+       * E of Eq. 102-104 in cell sizes: E_K = this x h_K in cell K at the
+       * band level or finer; a coarser cell takes the size of its
+       * descendants at @p band_level.
+       */
       double             interface_half_width_cells = 1.5;
+      /** Refinement level of the interface band. */
+      unsigned int       band_level = 0;
       double             stabilisation_constant = 1; // c_tau
       double             external_pressure      = 0; // on the free faces
       /** Box faces (colorized ids 0..2dim-1) with zero normal velocity. */

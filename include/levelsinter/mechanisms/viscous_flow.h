@@ -29,8 +29,13 @@ namespace levelsinter
   class ViscousFlow : public Mechanism<dim>
   {
   public:
+    /**
+     * @p band_level: the refinement level of the interface band, where the
+     * smoothing width E of the phases is set (TwoPhaseStokes::Settings).
+     */
     ViscousFlow(const ViscousFlowParameters &parameters,
                 const LevelSetFilter        &filter,
+                const unsigned int           band_level,
                 TimerOutput                 &timer);
 
     void
@@ -109,6 +114,7 @@ namespace levelsinter
 
     const ViscousFlowParameters          parameters;
     const LevelSetFilter                 filter;
+    const unsigned int                   band_level;
     TimerOutput                         &timer;
     const NewtonianPhases                phases;
     std::unique_ptr<TwoPhaseStokes<dim>> operator_;
