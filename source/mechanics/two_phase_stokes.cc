@@ -551,7 +551,7 @@ namespace levelsinter
     else
       {
         const BlockSchurPreconditioner preconditioner(
-          system_matrix, schur_matrix.block(1, 1), velocity_modes);
+          system_matrix, schur_matrix.block(1, 1), velocity_modes, dim);
         SolverControl control(settings.max_iterations,
                               settings.tolerance * system_rhs.l2_norm());
         SolverFGMRES<BlockVector> solver(

@@ -29,12 +29,14 @@ namespace levelsinter
     /**
      * Set up both AMG hierarchies: A with @p velocity_near_null_space (the
      * rigid-body modes, one vector per mode over the locally owned rows of
-     * A), S from @p schur_approximation.
+     * A), S from @p schur_approximation. @p dim sets how large a coarse
+     * level of A is still solved directly.
      */
     BlockSchurPreconditioner(
       const TrilinosWrappers::BlockSparseMatrix &system_matrix,
       const TrilinosWrappers::SparseMatrix      &schur_approximation,
-      const std::vector<std::vector<double>>    &velocity_near_null_space);
+      const std::vector<std::vector<double>>    &velocity_near_null_space,
+      const unsigned int                         dim);
 
     void
     vmult(TrilinosWrappers::MPI::BlockVector       &dst,
