@@ -43,9 +43,10 @@ namespace levelsinter
       // in 2D). In 2D that level (1/8 of the velocity rows) is solved
       // directly up to 16 000 rows at no extra cost per solve (R/h = 320);
       // a quarter of the rows keeps the fine level itself out of the
-      // direct solve (which doubles the cost of small problems). In 3D the
-      // coarse factorisation costs 20x the whole solve (R/h = 10: 11.1 s
-      // against 0.54 s), so ML's default stays (doc/numerics.md).
+      // direct solve (which doubles the cost of small problems). 3D keeps
+      // ML's default: its first coarse level is 6 % of the rows (below
+      // 2000 up to R/h = 10), and a 3D factorisation of up to 16 000 rows
+      // is untested (doc/numerics.md).
       if (dim == 2)
         parameters.set("coarse: max size",
                        std::clamp(matrix.NumGlobalRows() / 4, 2000, 16000));
