@@ -633,6 +633,40 @@ namespace
     return series;
   }
 
+  // Column names prefix + tau for the times of a study.
+  std::vector<std::string>
+  time_columns(const std::string &prefix, const std::vector<double> &times)
+  {
+    std::vector<std::string> names;
+    for (const double tau : times)
+      {
+        std::ostringstream name;
+        name << prefix << tau;
+        names.push_back(name.str());
+      }
+    return names;
+  }
+
+  // The samples y(tau) (tau increasing) at each of @p times, interpolated
+  // linearly between the samples around it; NaN where the samples do not
+  // span it.
+  std::vector<double>
+  values_at(const std::vector<double> &taus,
+            const std::vector<double> &ys,
+            const std::vector<double> &times)
+  {
+    std::vector<double> values(times.size(),
+                               std::numeric_limits<double>::quiet_NaN());
+    for (unsigned int i = 1; i < taus.size(); ++i)
+      for (unsigned int k = 0; k < times.size(); ++k)
+        if (taus[i - 1] < times[k] && times[k] <= taus[i])
+          {
+            const double s = (times[k] - taus[i - 1]) / (taus[i] - taus[i - 1]);
+            values[k]      = (1 - s) * ys[i - 1] + s * ys[i];
+          }
+    return values;
+  }
+
   // Over all levels: the iteration count must not grow as h shrinks.
   void
   check_iterations(const std::vector<LevelRun> &runs, const Options &options)
@@ -662,12 +696,8 @@ namespace
     const std::vector<double> early_times = {0.05, 0.1, 0.2, 0.5};
     std::vector<std::string>  columns = {"mean_dt", "rejected", "max_neck_error",
                                         "final_neck_error", "area_drift"};
-    for (const double tau : early_times)
-      {
-        std::ostringstream name;
-        name << "neck_error_tau" << tau;
-        columns.push_back(name.str());
-      }
+    const auto early_columns = time_columns("neck_error_tau", early_times);
+    columns.insert(columns.end(), early_columns.begin(), early_columns.end());
     columns.insert(columns.end(),
                    {"fine_cells_step1",
                     "max_fine_cell_distance",
@@ -744,34 +774,26 @@ namespace
         const auto  &neck  = run.metrics.at("neck_radius");
         auto         series = open_series(
           options, level, "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R");
-        double max_error = 0, final_error = 0;
-        // Relative neck error at each early time, the computed neck
-        // interpolated linearly between the samples around it (NaN when
-        // the run does not span it).
-        std::vector<double> early_errors(early_times.size(),
-                                         std::numeric_limits<double>::quiet_NaN());
-        double              previous_tau = 0;
+        double              max_error = 0, final_error = 0;
+        std::vector<double> taus;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
             const double tau     = tau0 + t[i] * gamma / (eta * R);
             const double y_exact = exact.neck(exact.m_of_time(tau));
             final_error          = std::abs(neck[i] - y_exact) / y_exact;
             max_error            = std::max(max_error, final_error);
+            taus.push_back(tau);
             if (series.is_open())
               series << tau << ',' << neck[i] / R << ',' << y_exact / R
                      << '\n';
-            for (unsigned int k = 0; k < early_times.size(); ++k)
-              if (i > 0 && previous_tau < early_times[k] &&
-                  early_times[k] <= tau)
-                {
-                  const double s = (early_times[k] - previous_tau) /
-                                   (tau - previous_tau);
-                  const double y = (1 - s) * neck[i - 1] + s * neck[i];
-                  const double y_k =
-                    exact.neck(exact.m_of_time(early_times[k]));
-                  early_errors[k] = std::abs(y - y_k) / y_k;
-                }
-            previous_tau = tau;
+          }
+        // Relative neck error at each early time (NaN when the run does
+        // not span it).
+        std::vector<double> early_errors = values_at(taus, neck, early_times);
+        for (unsigned int k = 0; k < early_times.size(); ++k)
+          {
+            const double y_k = exact.neck(exact.m_of_time(early_times[k]));
+            early_errors[k]  = std::abs(early_errors[k] - y_k) / y_k;
           }
         std::vector<double> values = {
           run.mean_dt,
@@ -826,12 +848,8 @@ namespace
                                              "final_neck_over_a",
                                              "final_radius_error",
                                              "volume_drift"};
-    for (const double tau : early_times)
-      {
-        std::ostringstream name;
-        name << "neck_tau" << tau;
-        columns.push_back(name.str());
-      }
+    const auto early_columns = time_columns("neck_tau", early_times);
+    columns.insert(columns.end(), early_columns.begin(), early_columns.end());
     Table                 table(run_columns(columns), options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
@@ -848,16 +866,14 @@ namespace
         auto         series = open_series(
           options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
         // Least-squares slope of log x against log t' while x < 0.3 a,
-        // where the law applies; x/a at the early times, interpolated
-        // linearly between the samples around them (NaN when the run does
-        // not span them).
-        std::vector<double> log_t, log_x;
-        std::vector<double> early_necks(early_times.size(),
-                                        std::numeric_limits<double>::quiet_NaN());
+        // where the law applies; x/a at the early times (NaN when the run
+        // does not span them).
+        std::vector<double> log_t, log_x, taus;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
             const double tau = (t0 + t[i]) * gamma / (eta * a);
             const double x   = neck[i] / a;
+            taus.push_back(tau);
             if (series.is_open())
               series << tau << ',' << x << ',' << std::sqrt(1.5 * tau) << '\n';
             if (x < 0.3)
@@ -865,17 +881,10 @@ namespace
                 log_t.push_back(std::log(tau));
                 log_x.push_back(std::log(x));
               }
-            if (i == 0)
-              continue;
-            const double previous_tau = (t0 + t[i - 1]) * gamma / (eta * a);
-            for (unsigned int k = 0; k < early_times.size(); ++k)
-              if (previous_tau < early_times[k] && early_times[k] <= tau)
-                {
-                  const double s =
-                    (early_times[k] - previous_tau) / (tau - previous_tau);
-                  early_necks[k] = ((1 - s) * neck[i - 1] + s * neck[i]) / a;
-                }
           }
+        std::vector<double> early_necks = values_at(taus, neck, early_times);
+        for (double &x : early_necks)
+          x /= a;
         const double        slope   = study::least_squares(log_t, log_x).slope;
         const double        final_x = neck.back() / a;
         std::vector<double> values  = {
@@ -886,7 +895,6 @@ namespace
           std::abs(run.metrics.at("volume_change").back())};
         values.insert(values.end(), early_necks.begin(), early_necks.end());
         table.add(run_row(level, run, values));
-        runs.push_back(run);
       }
     check("finest neck growth x_end / x_0", table.finest("neck_growth"),
           options, "min-neck-growth", false);

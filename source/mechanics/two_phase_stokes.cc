@@ -354,10 +354,8 @@ namespace levelsinter
           // band: the filtered level set carries the distance only a few
           // band cells out (the sine filter saturates at 2 E_f / pi), so a
           // wider ramp there would mix the phases far from the interface.
-          const unsigned int coarser =
-            settings.band_level > static_cast<unsigned int>(cell->level()) ?
-              settings.band_level - cell->level() :
-              0;
+          const int    coarser = std::max(0, int(settings.band_level) -
+                                                cell->level());
           const double E =
             settings.interface_half_width_cells * h / (1u << coarser);
           const SmoothedHeaviside heaviside(E);
