@@ -17,20 +17,22 @@ namespace levelsinter
    *   [B  -C ] [p] = [g]
    * (A viscous, C the ASGS stabilisation plus the compressibility mass):
    *   P = [A  B^T; 0  -S],  S ~ B A^{-1} B^T + C ~ M_{1/eta_K} + C,
-   * with one AMG W-cycle for A and one V-cycle for the assembled S
-   * approximation (step-32/55 structure). M_{1/eta_K} weights the pressure mass with the
-   * inverse of the cell-mean viscosity (Grinevich & Olshanskii 2009), which
-   * keeps the outer FGMRES count flat in h and in the viscosity contrast
-   * (doc/numerics.md, "Stokes preconditioner").
+   * with one AMG W-cycle for A (step-32/55 structure) and a few
+   * Jacobi-preconditioned CG iterations for the assembled S approximation.
+   * M_{1/eta_K} weights the pressure mass with the inverse of the
+   * cell-mean viscosity (Grinevich & Olshanskii 2009), which keeps the
+   * outer FGMRES count nearly flat in h and in the viscosity contrast
+   * (doc/numerics.md, "Stokes preconditioner"). The inner CG makes the
+   * preconditioner nonlinear, which FGMRES allows.
    */
   class BlockSchurPreconditioner
   {
   public:
     /**
-     * Set up both AMG hierarchies: A with @p velocity_near_null_space (the
+     * Set up the AMG hierarchy of A with @p velocity_near_null_space (the
      * rigid-body modes, one vector per mode over the locally owned rows of
-     * A), S from @p schur_approximation. @p dim sets how large a coarse
-     * level of A is still solved directly.
+     * A), and the Jacobi preconditioner of @p schur_approximation. @p dim
+     * sets how large a coarse level of A is still solved directly.
      */
     BlockSchurPreconditioner(
       const TrilinosWrappers::BlockSparseMatrix &system_matrix,
@@ -45,6 +47,7 @@ namespace levelsinter
   private:
     const TrilinosWrappers::BlockSparseMatrix &system_matrix;
     TrilinosWrappers::PreconditionAMG          velocity_amg;
-    TrilinosWrappers::PreconditionAMG          schur_amg;
+    const TrilinosWrappers::SparseMatrix      &schur_approximation;
+    TrilinosWrappers::PreconditionJacobi       schur_jacobi;
   };
 } // namespace levelsinter
