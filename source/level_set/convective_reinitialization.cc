@@ -63,7 +63,18 @@ namespace levelsinter
     // then moves alpha by at most h_min per step in every cell, and the
     // coarse cells outside the band (where the filter should be saturated)
     // see a Courant number h_min / h_K < 1 instead of being driven hard.
-    const double lambda = settings.reinitialization_strength * h_min / dt;
+    //
+    // Optionally h is the band's cell size inside the solid (alpha < 0).
+    // With k curvature levels h_min is 2^k below it, and at a growing
+    // two-grain neck strength h_min / dt fell far behind the front: the
+    // level set inside the neck stayed nearly flat (|alpha| < 0.005 where
+    // the filtered distance is 0.028) until the neck split (k = 6). In the
+    // atmosphere the finest h stays: there the first necks sit in a wedge
+    // thinner than a cell, which a reinitialisation at the band's h on
+    // both sides opened and separated. Not the default: on Hopper's
+    // viscous neck (2 levels) it raised the final neck error from 0.265 to
+    // 0.290 (doc/validation.md, "Steps that grow with t").
+    const double h_solid = std::max(h_min, settings.solid_cell_size);
 
     const QGauss<dim> quadrature(2);
     FEValues<dim>     fe_values(level_set.fe(),
@@ -112,6 +123,9 @@ namespace levelsinter
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const double a    = alpha[q];
+              const double h_r  = a < 0 ? h_solid : h_min;
+              const double lambda =
+                settings.reinitialization_strength * h_r / dt;
               const double norm = grad_alpha[q].norm();
               const double eps  = h * norm;
               const double sign =
@@ -149,7 +163,7 @@ namespace levelsinter
               // where |grad alpha| = g(alpha) has no stable solution (g -> 0
               // but the direction n of a nearly flat alpha is noise).
               const double nu =
-                need * settings.reinitialization_diffusion * (h_min / dt) * h;
+                need * settings.reinitialization_diffusion * (h_r / dt) * h;
               const double ratio2 = (a / filter.saturation()) *
                                     (a / filter.saturation());
               Tensor<1, dim> target_gradient;

@@ -173,6 +173,16 @@ namespace levelsinter
         "to the deviation below it, so that a level set already at its "
         "target is not rebuilt every step. 0 reinitialises everywhere at "
         "full strength, as in the paper (doc/numerics.md).");
+      prm.declare_entry(
+        "Solid reinitialization from band cells",
+        "false",
+        Patterns::Bool(),
+        "true: inside the solid the reinitialisation speed is strength x "
+        "h / dt with h the cell size at 'Mesh refinement/Maximum level' "
+        "instead of the finest cell, so that with curvature refinement "
+        "levels the level set inside a growing neck stays a distance "
+        "(surface-diffusion necks; doc/user_guide.md). Changes nothing "
+        "without curvature refinement levels.");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -399,6 +409,17 @@ namespace levelsinter
     prm.leave_subsection();
   }
 
+  double
+  SceneParameters::band_cell_size() const
+  {
+    double h_coarse = 0;
+    for (unsigned int i = 0; i < dimension; ++i)
+      h_coarse = std::max(h_coarse,
+                          (domain.upper_corner[i] - domain.lower_corner[i]) /
+                            domain.subdivisions[i]);
+    return h_coarse / std::pow(2.0, refinement.max_level);
+  }
+
   void
   SceneParameters::parse_parameters(ParameterHandler  &prm,
                                     const std::string &scene_directory)
@@ -489,6 +510,8 @@ namespace levelsinter
       prm.get_double("Reinitialization diffusion");
     level_set.reinitialization_tolerance =
       prm.get_double("Reinitialization tolerance");
+    level_set.solid_reinitialization_from_band =
+      prm.get_bool("Solid reinitialization from band cells");
     if (level_set.filter_thickness <= 0)
       fail("Level set/Filter thickness", "must be positive");
     prm.leave_subsection();
@@ -611,12 +634,7 @@ namespace levelsinter
              std::to_string(level_set.filter_thickness) +
              "): from E on the filtered level set carries no distance");
     {
-      double h_coarse = 0;
-      for (unsigned int i = 0; i < d; ++i)
-        h_coarse = std::max(h_coarse,
-                            (domain.upper_corner[i] - domain.lower_corner[i]) /
-                              domain.subdivisions[i]);
-      const double h_min = h_coarse / std::pow(2.0, refinement.max_level);
+      const double h_min = band_cell_size();
       const double needed =
         (refinement.adapt_interval * time.cfl + 1) * h_min;
       if (time.cfl > 0 && refinement.band_width < needed)

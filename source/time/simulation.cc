@@ -66,7 +66,10 @@ namespace levelsinter
                  scene.level_set.max_iterations,
                  scene.level_set.reinitialization_strength,
                  scene.level_set.reinitialization_diffusion,
-                 scene.level_set.reinitialization_tolerance},
+                 scene.level_set.reinitialization_tolerance,
+                 scene.level_set.solid_reinitialization_from_band ?
+                   scene.band_cell_size() :
+                   0.},
                 timer_output)
     , field_output(scene.output.directory,
                    scene.output.write_vtu,

@@ -17,7 +17,9 @@ namespace levelsinter
    *
    *   d alpha/dt + (v + lambda v_r) . grad alpha = lambda sgn(alpha) g(alpha),
    *
-   * lambda = h_min / dt, v_r = sgn(alpha) grad alpha / |grad alpha| and g the
+   * lambda = h / dt (times a strength; h the finest cell size, or in the
+   * solid optionally the band's), v_r = sgn(alpha) grad alpha /
+   * |grad alpha| and g the
    * filter's gradient-norm target (Eq. 67). As in the paper, v_r and the
    * right-hand side are taken from the previous step (linearisation), the
    * sign is smoothed as alpha / sqrt(alpha^2 + (h_K |grad alpha|)^2)
@@ -49,6 +51,9 @@ namespace levelsinter
       double reinitialization_diffusion = 0.05;
       // delta: full reinitialisation where ||grad alpha| - g| >= delta.
       double reinitialization_tolerance = 0.25;
+      // If positive, lambda's h in the solid: the cell size at the band's
+      // level (`Maximum level`). 0: the finest cell everywhere.
+      double solid_cell_size = 0;
     };
 
     ConvectiveReinitialization(const LevelSetFilter &filter,

@@ -32,6 +32,15 @@ namespace levelsinter
     void
     parse_parameters(ParameterHandler &prm, const std::string &scene_directory);
 
+    /**
+     * Edge length of the cells at `Mesh refinement/Maximum level`, the
+     * level of the band around the interface (the largest over the axes
+     * if the coarse cells are not square). Curvature refinement makes
+     * cells finer than this near sharp features.
+     */
+    double
+    band_cell_size() const;
+
     unsigned int dimension = 2;
 
     struct Domain
@@ -67,6 +76,7 @@ namespace levelsinter
       double       reinitialization_strength  = 0.25;
       double       reinitialization_diffusion = 0.05;
       double       reinitialization_tolerance = 0.25;
+      bool         solid_reinitialization_from_band = false;
     } level_set;
 
     struct Refinement
