@@ -364,12 +364,10 @@ namespace levelsinter
           // hanging nodes, so that form keeps the 3-point rule.
           const auto ls_cell = same_cell(cell, alpha.dof_handler());
           ls_cell->get_dof_values(alpha.alpha(), vertex_alpha);
+          const auto [lowest, highest] =
+            std::minmax_element(vertex_alpha.begin(), vertex_alpha.end());
           const bool uniform =
-            !curvature_form &&
-            (*std::max_element(vertex_alpha.begin(), vertex_alpha.end()) <
-               -E ||
-             *std::min_element(vertex_alpha.begin(), vertex_alpha.end()) >
-               3 * E);
+            !curvature_form && (*highest < -E || *lowest > 3 * E);
           FEValues<dim> &values = uniform ? uniform_values : transition_values;
           FEValues<dim> &level_set_values =
             uniform ? uniform_level_set_values : transition_level_set_values;

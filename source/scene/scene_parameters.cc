@@ -634,9 +634,8 @@ namespace levelsinter
              std::to_string(level_set.filter_thickness) +
              "): from E on the filtered level set carries no distance");
     {
-      const double h_min = band_cell_size();
       const double needed =
-        (refinement.adapt_interval * time.cfl + 1) * h_min;
+        (refinement.adapt_interval * time.cfl + 1) * band_cell_size();
       if (time.cfl > 0 && refinement.band_width < needed)
         fail("Mesh refinement/Band width",
              "is " + std::to_string(refinement.band_width) +
