@@ -175,14 +175,17 @@ namespace levelsinter
         "full strength, as in the paper (doc/numerics.md).");
       prm.declare_entry(
         "Solid reinitialization from band cells",
-        "false",
-        Patterns::Bool(),
+        "auto",
+        Patterns::Selection("auto|true|false"),
         "true: inside the solid the reinitialisation speed is strength x "
         "h / dt with h the cell size at 'Mesh refinement/Maximum level' "
         "instead of the finest cell, so that with curvature refinement "
         "levels the level set inside a growing neck stays a distance "
-        "(surface-diffusion necks; doc/user_guide.md). Changes nothing "
-        "without curvature refinement levels.");
+        "(surface-diffusion necks; doc/user_guide.md). false: the finest "
+        "cell everywhere. auto: true when surface diffusion is enabled and "
+        "viscous flow is not (measured better for surface-diffusion necks, "
+        "worse for viscous ones). Changes nothing without curvature "
+        "refinement levels.");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0, 1),
@@ -510,8 +513,8 @@ namespace levelsinter
       prm.get_double("Reinitialization diffusion");
     level_set.reinitialization_tolerance =
       prm.get_double("Reinitialization tolerance");
-    level_set.solid_reinitialization_from_band =
-      prm.get_bool("Solid reinitialization from band cells");
+    const std::string solid_reinitialization =
+      prm.get("Solid reinitialization from band cells");
     if (level_set.filter_thickness <= 0)
       fail("Level set/Filter thickness", "must be positive");
     prm.leave_subsection();
@@ -577,6 +580,10 @@ namespace levelsinter
                "must be positive when Time unit = reduced");
       }
     prm.leave_subsection();
+    level_set.solid_reinitialization_from_band =
+      solid_reinitialization == "auto" ?
+        surface_diffusion.enabled && !viscous_flow.enabled :
+        solid_reinitialization == "true";
 
     prm.enter_subsection("Velocity");
     velocity.type = prm.get("Type");

@@ -76,6 +76,8 @@ namespace levelsinter
       double       reinitialization_strength  = 0.25;
       double       reinitialization_diffusion = 0.05;
       double       reinitialization_tolerance = 0.25;
+      // "auto" is resolved when the scene is read (surface diffusion
+      // without viscous flow).
       bool         solid_reinitialization_from_band = false;
     } level_set;
 
