@@ -25,35 +25,26 @@ no unstable one. Every run is a row of OUT.csv (the driver's columns, the
 scheme and a `stable` column); the last lines printed are the brackets.
 Further options (--mode, --set ...) go to the driver.
 """
+import argparse
 import csv
 import math
 import os
 import subprocess
-import sys
 import tempfile
 
-args = sys.argv[1:]
-
-
-def take(name, default):
-    if name in args:
-        i = args.index(name)
-        value = args[i + 1]
-        del args[i : i + 2]
-        return value
-    return default
-
-
-levels = [int(x) for x in take("--levels", "4,5").split(",")]
-out = take("--csv", None)
-coupled = take("--coupled", "1")
-steps = int(take("--steps", "20"))
-ratio = float(take("--ratio", "1.2"))
-start = float(take("--start", "1e-4"))
-max_dt = float(take("--max-dt", "10"))
-if len(args) < 2 or out is None:
-    sys.exit(__doc__)
-driver, scene, extra = args[0], args[1], args[2:]
+parser = argparse.ArgumentParser(usage=__doc__, allow_abbrev=False)
+parser.add_argument("driver")
+parser.add_argument("scene")
+parser.add_argument("--levels", default="4,5")
+parser.add_argument("--csv", required=True)
+parser.add_argument("--coupled", default="1")
+parser.add_argument("--steps", type=int, default=20)
+parser.add_argument("--ratio", type=float, default=1.2)
+parser.add_argument("--start", type=float, default=1e-4)
+parser.add_argument("--max-dt", type=float, default=10)
+options, extra = parser.parse_known_args()
+levels = [int(x) for x in options.levels.split(",")]
+steps, coupled = options.steps, options.coupled
 mode = int(extra[extra.index("--mode") + 1]) if "--mode" in extra else 2
 exact_rate = mode * mode * (mode * mode - 1.0)  # 2D (driver's header)
 scheme = "mixed" if coupled == "1" else "decoupled"
@@ -66,8 +57,8 @@ def run(level, dt):
     with tempfile.TemporaryDirectory() as tmp:
         table = os.path.join(tmp, "run.csv")
         fraction = steps * dt * exact_rate
-        command = [os.path.abspath(driver), "mullins",
-                   os.path.abspath(scene), str(level), str(steps),
+        command = [os.path.abspath(options.driver), "mullins",
+                   os.path.abspath(options.scene), str(level), str(steps),
                    "--time-fraction", repr(fraction), "--coupled", coupled,
                    "--csv", table] + extra
         subprocess.run(command, cwd=tmp, stdout=subprocess.DEVNULL,
@@ -95,17 +86,17 @@ def run(level, dt):
 
 for level in levels:
     lo, hi = None, None  # largest stable, smallest unstable dt
-    dt = start
+    dt = options.start
     while lo is None or hi is None:
         if run(level, dt):
             lo = dt
-            if dt >= max_dt:
+            if dt >= options.max_dt:
                 break
-            dt = min(10 * dt, max_dt)
+            dt = min(10 * dt, options.max_dt)
         else:
             hi = dt
             dt /= 10
-    while hi is not None and hi / lo > ratio:
+    while hi is not None and hi / lo > options.ratio:
         dt = math.sqrt(lo * hi)
         if run(level, dt):
             lo = dt
@@ -113,7 +104,7 @@ for level in levels:
             hi = dt
     brackets.append((level, lo, hi))
 
-with open(out, "w", newline="") as f:
+with open(options.csv, "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
     writer.writeheader()
     writer.writerows(rows)
