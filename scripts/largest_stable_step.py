@@ -49,11 +49,11 @@ mode = int(extra[extra.index("--mode") + 1]) if "--mode" in extra else 2
 exact_rate = mode * mode * (mode * mode - 1.0)  # 2D (driver's header)
 scheme = "mixed" if coupled == "1" else "decoupled"
 
-rows, brackets = [], []
+rows, brackets = [], []  # every trial; (level, stable, unstable)
 
 
 def run(level, dt):
-    """One run of STEPS steps of dt; returns (stable, row)."""
+    """One trial of STEPS steps of dt, recorded in --csv; True if stable."""
     with tempfile.TemporaryDirectory() as tmp:
         table = os.path.join(tmp, "run.csv")
         fraction = steps * dt * exact_rate
@@ -76,6 +76,12 @@ def run(level, dt):
               and not math.isnan(float(row["rate"])))
     row.update(scheme=scheme, max_isoperimetric_ratio=isoperimetric,
                stable=int(stable))
+    # Written after every trial, so that a stopped study keeps its rows.
+    with open(options.csv, "a" if rows else "w", newline="") as f:
+        writer = csv.DictWriter(f, fieldnames=list(row.keys()))
+        if not rows:
+            writer.writeheader()
+        writer.writerow(row)
     rows.append(row)
     print(f"{scheme} level {level} dt {dt:.4g}: L^2/A ratio "
           f"{isoperimetric:.4g}, "
@@ -104,10 +110,6 @@ for level in levels:
             hi = dt
     brackets.append((level, lo, hi))
 
-with open(options.csv, "w", newline="") as f:
-    writer = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
-    writer.writeheader()
-    writer.writerows(rows)
 for level, lo, hi in brackets:
     print(f"{scheme} level {level}: stable dt* {lo:.4g}, unstable "
           f"{'-' if hi is None else f'{hi:.4g}'}")
