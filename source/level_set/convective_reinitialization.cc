@@ -71,9 +71,10 @@ namespace levelsinter
     // the filtered distance is 0.028) until the neck split (k = 6). In the
     // atmosphere the finest h stays: there the first necks sit in a wedge
     // thinner than a cell, which a reinitialisation at the band's h on
-    // both sides opened and separated. Not the default: on Hopper's
-    // viscous neck (2 levels) it raised the final neck error from 0.265 to
-    // 0.290 (doc/validation.md, "Steps that grow with t").
+    // both sides opened and separated. Scenes choose it (`auto`: surface
+    // diffusion without viscous flow): on Hopper's viscous neck (2 levels)
+    // it raised the final neck error from 0.265 to 0.290
+    // (doc/validation.md, "Steps that grow with t").
     const double h_solid = std::max(h_min, settings.solid_cell_size);
 
     const QGauss<dim> quadrature(2);

@@ -19,10 +19,10 @@ namespace levelsinter
    *
    * lambda = h / dt (times a strength; h the finest cell size, or in the
    * solid optionally the band's), v_r = sgn(alpha) grad alpha /
-   * |grad alpha| and g the
-   * filter's gradient-norm target (Eq. 67). As in the paper, v_r and the
-   * right-hand side are taken from the previous step (linearisation), the
-   * sign is smoothed as alpha / sqrt(alpha^2 + (h_K |grad alpha|)^2)
+   * |grad alpha| and g the filter's gradient-norm target (Eq. 67). As in
+   * the paper, v_r and the right-hand side are taken from the previous step
+   * (linearisation), the sign is smoothed as
+   * alpha / sqrt(alpha^2 + (h_K |grad alpha|)^2)
    * (Eq. 57 with eps = h_K, scaled so that it does not depend on the
    * gradient's size), and the equation is stabilised by SUPG (Eq. 72) with
    * the transient tau = ((2/dt)^2 + (2|w|/h_K)^2)^(-1/2), which reduces to
