@@ -43,6 +43,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
+#include <levelsinter/analysis/neck.h>
 #include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
@@ -416,10 +417,10 @@ namespace
                       const LevelSetField<dim> &alpha) {
       last_sample = step;
       const auto neck =
-        pair ? interface_measures::narrowest_neck(alpha, centres[0],
+        pair ? neck_measures::narrowest_neck(alpha, centres[0],
                                                   centres[1]) :
-               interface_measures::Neck{
-                 interface_measures::smallest_neck_radius(alpha, particles),
+               neck_measures::Neck{
+                 neck_measures::smallest_neck_radius(alpha, particles),
                  std::numeric_limits<double>::quiet_NaN()};
       const double volume =
         interface_measures::volume_and_area(alpha).solid_volume;

@@ -42,6 +42,8 @@
 #include <deal.II/non_matching/fe_values.h>
 #include <deal.II/non_matching/mesh_classifier.h>
 
+#include <levelsinter/analysis/hopper.h>
+#include <levelsinter/analysis/neck.h>
 #include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
 #include <levelsinter/scene/command_line.h>
@@ -329,150 +331,6 @@ namespace
           worst_kappa, options, "max-curvature-error");
   }
 
-  // Hopper's exact coalescence of two equal cylinders of radius R (DESIGN.md
-  // Sect. 4 item 4): z = A zeta / (1 - m zeta^2), |zeta| = 1, with
-  // A = sqrt2 R (1 - m^2) / sqrt(1 + m^2), neck half-width
-  // y_n = sqrt2 R (1 - m) / sqrt(1 + m^2) and
-  // t gamma / (eta R) = (pi / sqrt2) int_m^1 dk / (k sqrt(1 + k^2) K(k)).
-  class Hopper
-  {
-  public:
-    explicit Hopper(const double R)
-      : R(R)
-    {}
-
-    double
-    neck(const double m) const
-    {
-      return std::sqrt(2.) * R * (1 - m) / std::sqrt(1 + m * m);
-    }
-
-    // d y_n / d(t gamma / (eta R)) at m, by central differences.
-    double
-    neck_speed(const double m) const
-    {
-      const double dm = 1e-4 * std::min(m, 1 - m);
-      return (neck(m + dm) - neck(m - dm)) / (time(m + dm) - time(m - dm));
-    }
-
-    // m for a neck half-width y (y_n decreases monotonically with m).
-    double
-    m_of_neck(const double y) const
-    {
-      return bisect([&](const double m) { return neck(m) - y; }, 0, 1);
-    }
-
-    // Dimensionless time t gamma / (eta R) from touching (m = 1) to m. The
-    // integrand vanishes like 1/log at k = 1 (K(k) diverges); substituting
-    // k = 1 - (1 - m) s^2 removes the endpoint steepness, then Gauss
-    // quadrature on 64 panels converges to ~1e-8 (checked against the
-    // values DESIGN.md quotes).
-    double
-    time(const double m) const
-    {
-      const QGauss<1> gauss(8);
-      const unsigned  panels = 64;
-      double          sum    = 0;
-      for (unsigned int p = 0; p < panels; ++p)
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          {
-            const double s  = (p + gauss.point(q)[0]) / panels;
-            const double k  = 1 - (1 - m) * s * s;
-            const double dk = 2 * (1 - m) * s / panels * gauss.weight(q);
-            sum += dk / (k * std::sqrt(1 + k * k) * std::comp_ellint_1(k));
-          }
-      return M_PI / std::sqrt(2.) * sum;
-    }
-
-    // m reached at dimensionless time tau (time() decreases with m).
-    double
-    m_of_time(const double tau) const
-    {
-      return bisect([&](const double m) { return tau - time(m); }, 0, 1);
-    }
-
-    // Boundary points z(theta) of the shape with parameter m.
-    std::vector<Point<2>>
-    boundary(const double m, const unsigned int n) const
-    {
-      const double          A = std::sqrt(2.) * R * (1 - m * m) / std::sqrt(1 + m * m);
-      std::vector<Point<2>> points(n);
-      for (unsigned int i = 0; i < n; ++i)
-        {
-          const std::complex<double> zeta =
-            std::polar(1.0, 2 * M_PI * i / n);
-          const std::complex<double> z = A * zeta / (1. - m * zeta * zeta);
-          points[i]                    = Point<2>(z.real(), z.imag());
-        }
-      return points;
-    }
-
-    // Implicit quartic: negative inside the solid.
-    double
-    implicit(const double m, const Point<2> &p) const
-    {
-      const double x2 = p[0] * p[0], y2 = p[1] * p[1];
-      return (x2 + y2) * (x2 + y2) -
-             2 * R * R / (1 + m * m) *
-               ((1 + m) * (1 + m) * x2 + (1 - m) * (1 - m) * y2);
-    }
-
-  private:
-    template <typename F>
-    static double
-    bisect(const F &f, double a, double b)
-    {
-      // f changes sign on [a, b]; f(a) has the sign of -f(b).
-      const double fa = f(a);
-      for (unsigned int i = 0; i < 200 && b - a > 1e-14; ++i)
-        {
-          const double c = 0.5 * (a + b);
-          if ((f(c) > 0) == (fa > 0))
-            a = c;
-          else
-            b = c;
-        }
-      return 0.5 * (a + b);
-    }
-
-    double R;
-  };
-
-  // Filtered signed distance to Hopper's shape: distance to a fine polygon
-  // of the boundary, sign from the implicit quartic.
-  class HopperLevelSet : public Function<2>
-  {
-  public:
-    HopperLevelSet(const Hopper &hopper, const double m, const LevelSetFilter &filter)
-      : m(m)
-      , hopper(hopper)
-      , points(hopper.boundary(m, 20000))
-      , filter(filter)
-    {}
-
-    double
-    value(const Point<2> &p, const unsigned int = 0) const override
-    {
-      double d2 = std::numeric_limits<double>::max();
-      for (unsigned int i = 0; i < points.size(); ++i)
-        {
-          const Point<2>     &a = points[i];
-          const Point<2>     &b = points[(i + 1) % points.size()];
-          const Tensor<1, 2> ab = b - a;
-          const double       s  = std::clamp((p - a) * ab / ab.norm_square(), 0., 1.);
-          d2 = std::min(d2, (p - (a + s * ab)).norm_square());
-        }
-      const double d = std::sqrt(d2);
-      return filter.filter(hopper.implicit(m, p) <= 0 ? -d : d);
-    }
-
-  private:
-    double                m;
-    const Hopper         &hopper;
-    std::vector<Point<2>> points;
-    const LevelSetFilter &filter;
-  };
-
   // Column values of a metrics.csv.
   std::map<std::string, std::vector<double>>
   read_metrics(const std::string &file_name)
@@ -741,7 +599,7 @@ namespace
                                     double,
                                     const LevelSetField<dim> &alpha) {
               const Point<dim> neck_point(
-                0, interface_measures::smallest_neck_radius(alpha, particles));
+                0, neck_measures::smallest_neck_radius(alpha, particles));
               unsigned int n_fine   = 0;
               double       farthest = 0;
               for (const auto &cell : alpha.dof_handler().active_cell_iterators())

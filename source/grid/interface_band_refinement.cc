@@ -3,7 +3,6 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_generator.h>
 
 #include <deal.II/lac/vector.h>
 
@@ -16,23 +15,6 @@
 
 namespace levelsinter
 {
-  template <int dim>
-  void
-  make_box_mesh(parallel::distributed::Triangulation<dim> &tria,
-                const SceneParameters::Domain             &domain)
-  {
-    Point<dim>                lower, upper;
-    std::vector<unsigned int> repetitions(dim);
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d]       = domain.lower_corner[d];
-        upper[d]       = domain.upper_corner[d];
-        repetitions[d] = domain.subdivisions[d];
-      }
-    GridGenerator::subdivided_hyper_rectangle(
-      tria, repetitions, lower, upper, /*colorize=*/true);
-  }
-
   template <int dim>
   InterfaceBandRefinement<dim>::InterfaceBandRefinement(
     const SceneParameters::Refinement     &settings,
@@ -181,12 +163,6 @@ namespace levelsinter
     return Utilities::MPI::logical_or(any_flag, tria.get_communicator());
   }
 
-  template void
-  make_box_mesh(parallel::distributed::Triangulation<2> &,
-                const SceneParameters::Domain &);
-  template void
-  make_box_mesh(parallel::distributed::Triangulation<3> &,
-                const SceneParameters::Domain &);
   template class InterfaceBandRefinement<2>;
   template class InterfaceBandRefinement<3>;
 } // namespace levelsinter

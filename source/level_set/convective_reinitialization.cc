@@ -11,7 +11,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <levelsinter/grid/same_cell.h>
+#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/convective_reinitialization.h>
 
 #include <algorithm>

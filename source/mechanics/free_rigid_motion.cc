@@ -8,7 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <levelsinter/grid/same_cell.h>
+#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 
 namespace levelsinter

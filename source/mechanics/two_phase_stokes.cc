@@ -22,7 +22,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <levelsinter/grid/same_cell.h>
+#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>

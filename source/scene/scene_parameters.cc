@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 
-#include <levelsinter/grid/particles.h>
+#include <levelsinter/scene/particles.h>
 #include <levelsinter/scene/scene_parameters.h>
 
 #include <cmath>

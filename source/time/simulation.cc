@@ -5,7 +5,9 @@
 
 #include <deal.II/grid/grid_tools.h>
 
+#include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
 
@@ -291,7 +293,7 @@ namespace levelsinter
         if (scene.geometry.shape == "particles" && particles.size() >= 2)
           {
             const double neck =
-              interface_measures::smallest_neck_radius(alpha, particles);
+              neck_measures::smallest_neck_radius(alpha, particles);
             if (!std::isnan(neck))
               row.push_back(neck);
           }

@@ -15,13 +15,6 @@
 
 namespace levelsinter
 {
-  /** The box domain of the scene, its coarse cells and face ids 0..2*dim-1
-   *  (x-, x+, y-, y+, z-, z+). */
-  template <int dim>
-  void
-  make_box_mesh(parallel::distributed::Triangulation<dim> &tria,
-                const SceneParameters::Domain             &domain);
-
   /**
    * Refinement concentrated in a band around alpha = 0: a cell whose
    * vertices come within the band width of the interface (distance read back

@@ -3,7 +3,7 @@
 #include <deal.II/base/data_out_base.h>
 
 #include <levelsinter/level_set/level_set_field.h>
-#include <levelsinter/mechanisms/velocity_field.h>
+#include <levelsinter/level_set/velocity_field.h>
 
 #include <string>
 #include <utility>

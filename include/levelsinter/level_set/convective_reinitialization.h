@@ -7,7 +7,7 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
-#include <levelsinter/mechanisms/velocity_field.h>
+#include <levelsinter/level_set/velocity_field.h>
 
 namespace levelsinter
 {

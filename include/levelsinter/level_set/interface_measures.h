@@ -80,47 +80,6 @@ namespace levelsinter
                    const std::vector<Tensor<1, dim>> &directions);
 
     /**
-     * Neck radius between two particles centred at c1 and c2: the distance
-     * from the midpoint to the interface across the plane through the
-     * midpoint normal to c2 - c1, averaged over rays in that plane (2 rays in
-     * 2D, i.e. the half-width; 8 in 3D). Rays that leave the domain before
-     * meeting the interface (symmetry planes) are skipped. Zero when the
-     * midpoint lies outside the solid. For equal particles the mid-plane is
-     * the plane of the neck by symmetry.
-     */
-    template <int dim>
-    double
-    neck_radius(const LevelSetField<dim> &level_set,
-                const Point<dim>         &c1,
-                const Point<dim>         &c2);
-
-    /**
-     * The smallest neck over the pairs of particles (x, y[, z], r) that
-     * overlap, or of the pair if there are exactly two (neck_radius() for
-     * equal radii, narrowest_neck() otherwise); NaN without such a pair.
-     */
-    template <int dim>
-    double
-    smallest_neck_radius(const LevelSetField<dim>               &level_set,
-                         const std::vector<std::vector<double>> &particles);
-
-    /**
-     * The neck of unequal particles is not on the mid-plane: it is the
-     * narrowest cross-section between the centres.
-     */
-    struct Neck
-    {
-      double radius   = 0;   // measured as in neck_radius()
-      double position = 0.5; // s on c1 + s (c2 - c1)
-    };
-
-    template <int dim>
-    Neck
-    narrowest_neck(const LevelSetField<dim> &level_set,
-                   const Point<dim>         &c1,
-                   const Point<dim>         &c2);
-
-    /**
      * How well alpha satisfies the reinitialisation target |grad alpha| =
      * g(alpha) (Eq. 67) where the filter is not saturated (|d| <= E/2):
      * the largest and the root-mean-square deviation over that region.

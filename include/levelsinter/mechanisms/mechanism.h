@@ -1,7 +1,7 @@
 #pragma once
 
 #include <levelsinter/level_set/level_set_field.h>
-#include <levelsinter/mechanisms/velocity_field.h>
+#include <levelsinter/level_set/velocity_field.h>
 
 #include <limits>
 #include <string>

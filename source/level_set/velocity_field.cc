@@ -11,8 +11,8 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <levelsinter/grid/same_cell.h>
-#include <levelsinter/mechanisms/velocity_field.h>
+#include <levelsinter/level_set/same_cell.h>
+#include <levelsinter/level_set/velocity_field.h>
 
 #include <cmath>
 

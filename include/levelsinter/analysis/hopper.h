@@ -1,0 +1,81 @@
+#pragma once
+
+#include <deal.II/base/function.h>
+#include <deal.II/base/point.h>
+
+#include <levelsinter/level_set/level_set_filter.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * Hopper's exact coalescence of two equal viscous cylinders of radius R
+   * (DESIGN.md Sect. 4 item 4), centred at the origin with the line of
+   * centres along x: the boundary is z = A zeta / (1 - m zeta^2), |zeta| = 1,
+   * with A = sqrt2 R (1 - m^2) / sqrt(1 + m^2); the neck half-width is
+   * y_n = sqrt2 R (1 - m) / sqrt(1 + m^2) and the dimensionless time
+   * t gamma / (eta R) = (pi / sqrt2) int_m^1 dk / (k sqrt(1 + k^2) K(k)).
+   * m = 1: two touching circles; m = 0: the final circle of radius sqrt2 R.
+   */
+  class Hopper
+  {
+  public:
+    explicit Hopper(const double R);
+
+    /** Neck half-width y_n at parameter m. */
+    double
+    neck(const double m) const;
+
+    /** d y_n / d(t gamma / (eta R)) at m. */
+    double
+    neck_speed(const double m) const;
+
+    /** m for a neck half-width y. */
+    double
+    m_of_neck(const double y) const;
+
+    /** Dimensionless time t gamma / (eta R) from touching (m = 1) to m. */
+    double
+    time(const double m) const;
+
+    /** m reached at dimensionless time tau. */
+    double
+    m_of_time(const double tau) const;
+
+    /** @p n boundary points z(theta) of the shape with parameter m. */
+    std::vector<Point<2>>
+    boundary(const double m, const unsigned int n) const;
+
+    /** The implicit quartic of the shape: negative inside the solid. */
+    double
+    implicit(const double m, const Point<2> &p) const;
+
+  private:
+    double R;
+  };
+
+  /**
+   * Filtered signed distance to Hopper's shape at parameter m: distance to a
+   * fine polygon of the boundary (20 000 sides), sign from the implicit
+   * quartic.
+   */
+  class HopperLevelSet : public Function<2>
+  {
+  public:
+    HopperLevelSet(const Hopper         &hopper,
+                   const double          m,
+                   const LevelSetFilter &filter);
+
+    double
+    value(const Point<2> &p, const unsigned int component = 0) const override;
+
+  private:
+    double                m;
+    const Hopper         &hopper;
+    std::vector<Point<2>> points;
+    const LevelSetFilter &filter;
+  };
+} // namespace levelsinter
