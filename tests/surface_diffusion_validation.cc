@@ -48,6 +48,7 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include "study_support.h"
 #include "study_table.h"
 
 #include <algorithm>
@@ -71,28 +72,19 @@ namespace
     return it == options.limits.end() ? default_value : it->second;
   }
 
-  // Mean of one column of a metrics.csv over its rows after the first.
+  // Mean of one column of a metrics.csv over its rows after the first
+  // (the first row is the initial state); 0 if the column is absent.
   double
   column_mean(const std::string &file, const std::string &column)
   {
-    std::ifstream in(file);
-    std::string   line;
-    std::getline(in, line);
-    const auto names = Utilities::split_string_list(line, ',');
-    const auto pos   = std::find(names.begin(), names.end(), column);
-    if (pos == names.end())
+    const study::CsvTable metrics(file);
+    if (!metrics.has_column(column) || metrics.n_rows() < 2)
       return 0;
-    const unsigned int index = pos - names.begin();
-    double             sum   = 0;
-    unsigned int       n     = 0;
-    for (unsigned int row = 0; std::getline(in, line); ++row)
-      if (row > 0)
-        {
-          sum += Utilities::string_to_double(
-            Utilities::split_string_list(line, ',')[index]);
-          ++n;
-        }
-    return n > 0 ? sum / n : 0;
+    const auto &values = metrics.column(column);
+    double      sum    = 0;
+    for (unsigned int row = 1; row < values.size(); ++row)
+      sum += values[row];
+    return sum / (values.size() - 1);
   }
 
   // Amplitude of mode n relative to R, from the discrete interface:
@@ -158,9 +150,7 @@ namespace
     for (const unsigned int level : levels)
       for (const unsigned int steps : steps_per_efold)
         {
-          const double h =
-            (base.domain.upper_corner[0] - base.domain.lower_corner[0]) /
-            base.domain.subdivisions[0] / std::pow(2.0, level);
+          const double h = study::cell_size(base, level);
           double rate = 0, volume_change = 0, wall_time = 0, cpu_time = 0,
                  iterations = 0, solve_cpu = 0, amplitude_ratio = 0;
           unsigned int max_dofs = 0;

@@ -19,6 +19,7 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include "study_support.h"
 #include "study_table.h"
 
 #include <cmath>
@@ -65,8 +66,7 @@ namespace
       const auto it = options.limits.find(name);
       return std::to_string(it == options.limits.end() ? scaled : it->second);
     };
-    const double h = (base.domain.upper_corner[0] - base.domain.lower_corner[0]) /
-                     base.domain.subdivisions[0] / std::pow(2.0, level);
+    const double h = study::cell_size(base, level);
     // Each run writes its metrics to its own directory below the working
     // directory.
     const std::string output = "validation_output/" +
@@ -87,11 +87,11 @@ namespace
   {
     if (scene.geometry.shape == "slotted disk")
       {
-        const auto *disk = dynamic_cast<const SlottedDisk *>(
-          make_initial_signed_distance<2>(scene).get());
-        SlottedDisk copy = *disk;
-        volume           = copy.area();
-        area             = copy.perimeter();
+        // Keep the function alive while the disk is read.
+        const auto  distance = make_initial_signed_distance<2>(scene);
+        const auto &disk     = dynamic_cast<const SlottedDisk &>(*distance);
+        volume               = disk.area();
+        area                 = disk.perimeter();
         return;
       }
     const auto  &p = scene.geometry.particles;
@@ -123,8 +123,7 @@ namespace
     for (const unsigned int level : options.levels)
       {
         const auto scene = read_scene(scene_file, resolution_overrides(base, level, options));
-        const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
-                         scene.domain.subdivisions[0] / std::pow(2.0, level);
+        const double h = study::cell_size(scene, level);
         Simulation<dim>     simulation(scene, MPI_COMM_WORLD, std::cout);
         const auto          summary = simulation.run();
         double              volume, area;
@@ -166,8 +165,7 @@ namespace
         auto overrides = resolution_overrides(base, level, options);
         overrides.emplace_back("Geometry/Particles", particles);
         const auto scene = read_scene(scene_file, overrides);
-        const double h = (scene.domain.upper_corner[0] - scene.domain.lower_corner[0]) /
-                         scene.domain.subdivisions[0] / std::pow(2.0, level);
+        const double h = study::cell_size(scene, level);
         Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
         simulation.initialise();
         double volume, area;
@@ -201,7 +199,7 @@ namespace
     for (const unsigned int level : options.levels)
       {
         auto overrides = resolution_overrides(base, level, options);
-        const double h = 0.25 / std::pow(2.0, level);
+        const double h = study::cell_size(base, level);
         // 40 steps (the default) of lambda dt = 0.25 h move information
         // 10 h, beyond the filter thickness (6 h): enough to reach the
         // target everywhere. --steps N runs longer to show stability.

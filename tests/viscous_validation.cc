@@ -49,6 +49,7 @@
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
+#include "study_support.h"
 #include "study_table.h"
 
 #include <algorithm>
@@ -248,9 +249,7 @@ namespace
             throw std::runtime_error("unknown surface-tension form " + form);
           const bool exact_curvature = form == "csf-curvature-exact";
           const auto base = read_scene(scene_file, options.overrides);
-          const double L =
-            base.domain.upper_corner[0] - base.domain.lower_corner[0];
-          const double h = L / base.domain.subdivisions[0] / std::pow(2., level);
+          const double h = study::cell_size(base, level);
           const double band =
             std::max(base.level_set.filter_thickness, 6 * h);
           auto overrides = options.overrides;
@@ -331,30 +330,12 @@ namespace
           worst_kappa, options, "max-curvature-error");
   }
 
-  // Column values of a metrics.csv.
-  std::map<std::string, std::vector<double>>
-  read_metrics(const std::string &file_name)
-  {
-    std::ifstream                              in(file_name);
-    std::string                                line;
-    std::getline(in, line);
-    const auto names = Utilities::split_string_list(line, ',');
-    std::map<std::string, std::vector<double>> columns;
-    while (std::getline(in, line))
-      {
-        const auto values = Utilities::split_string_list(line, ',');
-        for (unsigned int i = 0; i < names.size() && i < values.size(); ++i)
-          columns[names[i]].push_back(std::stod(values[i]));
-      }
-    return columns;
-  }
-
   // What the two-particle studies read from one run.
   struct LevelRun
   {
     double                                     h = 0;
     SceneParameters                            scene;
-    std::map<std::string, std::vector<double>> metrics;
+    study::CsvTable                            metrics;
     unsigned int                               steps    = 0;
     unsigned int                               max_dofs = 0;
     double                                     wall_time = 0, cpu_time = 0;
@@ -364,8 +345,8 @@ namespace
     double mean_its = 0, max_its = 0, mean_solve_cpu = 0;
   };
 
-  // Run the scene with the finest cells at @p level (h = box height /
-  // subdivisions / 2^level), band and filter thickness tied to h (options
+  // Run the scene with the finest cells at @p level (h =
+  // study::cell_size), band and filter thickness tied to h (options
   // --band-cells, default 6, and --filter-cells, default 8);
   // --dt-factor F fixes dt = F eta_s h / gamma (F times the explicit
   // capillary limit at factor 1) with no CFL or capillary limit: the
@@ -383,8 +364,7 @@ namespace
   {
     LevelRun     run;
     const auto   base = read_scene(scene_file, options.overrides);
-    run.h = (base.domain.upper_corner[1] - base.domain.lower_corner[1]) /
-            base.domain.subdivisions[1] / std::pow(2., level);
+    run.h      = study::cell_size(base, level);
     const std::string directory =
       output_directory(name + "_level" + std::to_string(level));
     const auto option = [&](const std::string &key, const double fallback) {
@@ -428,9 +408,9 @@ namespace
     run.mean_dt        = summary.time / summary.steps;
     run.rejected_steps = summary.rejected_steps;
 
-    run.metrics           = read_metrics(directory + "/metrics.csv");
-    const auto &its       = run.metrics.at("stokes_iterations");
-    const auto &solve_cpu = run.metrics.at("stokes_solve_cpu");
+    run.metrics           = study::CsvTable(directory + "/metrics.csv");
+    const auto &its       = run.metrics.column("stokes_iterations");
+    const auto &solve_cpu = run.metrics.column("stokes_solve_cpu");
     for (unsigned int i = 0; i < its.size(); ++i)
       {
         run.mean_its += its[i] / its.size();
@@ -628,8 +608,8 @@ namespace
         const Hopper exact(R);
         const double gamma = run.scene.viscous_flow.surface_tension;
         const double eta   = run.scene.viscous_flow.solid_viscosity;
-        const auto  &t     = run.metrics.at("time");
-        const auto  &neck  = run.metrics.at("neck_radius");
+        const auto  &t     = run.metrics.column("time");
+        const auto  &neck  = run.metrics.column("neck_radius");
         auto         series = open_series(
           options, level, "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R");
         double              max_error = 0, final_error = 0;
@@ -658,7 +638,7 @@ namespace
           double(run.rejected_steps),
           max_error,
           final_error,
-          std::abs(run.metrics.at("volume_change").back())};
+          std::abs(run.metrics.column("volume_change").back())};
         values.insert(values.end(), early_errors.begin(), early_errors.end());
         values.insert(values.end(),
                       {double(fine_cells_step1),
@@ -718,8 +698,8 @@ namespace
         const double a     = run.scene.geometry.particles[0][dim];
         const double gamma = run.scene.viscous_flow.surface_tension;
         const double eta   = run.scene.viscous_flow.solid_viscosity;
-        const auto  &t     = run.metrics.at("time");
-        const auto  &neck  = run.metrics.at("neck_radius");
+        const auto  &t     = run.metrics.column("time");
+        const auto  &neck  = run.metrics.column("neck_radius");
         const double t0 = 2 * eta * std::pow(neck[0] / a, 2) * a / (3 * gamma);
         auto         series = open_series(
           options, level, "t_gamma_over_eta_a,neck_over_a,frenkel_eshelby");
@@ -750,7 +730,7 @@ namespace
           slope,
           final_x,
           std::abs(final_x - std::cbrt(2.)) / std::cbrt(2.),
-          std::abs(run.metrics.at("volume_change").back())};
+          std::abs(run.metrics.column("volume_change").back())};
         values.insert(values.end(), early_necks.begin(), early_necks.end());
         table.add(run_row(level, run, values));
       }
@@ -840,7 +820,7 @@ namespace
                           {area0,
                            closure,
                            area / area0,
-                           std::abs(run.metrics.at("volume_change").back())}));
+                           std::abs(run.metrics.column("volume_change").back())}));
       }
     check("finest closure time", table.finest("closure_time"), options,
           "max-closure-time");
@@ -865,8 +845,8 @@ namespace
       {
         const auto run = run_level<dim>(
           scene_file, level, options, "coalescence", [](auto &, auto &) {});
-        const double area   = run.metrics.at("solid_volume").back();
-        const double length = run.metrics.at("interface_area").back();
+        const double area   = run.metrics.column("solid_volume").back();
+        const double length = run.metrics.column("interface_area").back();
         const double parts =
           std::pow(2., run.scene.viscous_flow.symmetry_boundaries.size());
         const double radius = std::sqrt(parts * area / M_PI);
@@ -874,7 +854,7 @@ namespace
           level,
           run,
           {length / (2 * M_PI * radius / parts) - 1,
-           std::abs(run.metrics.at("volume_change").back())}));
+           std::abs(run.metrics.column("volume_change").back())}));
       }
     check("finest interface length / that of the round shape - 1",
           table.finest("roundness_error"), options, "max-roundness-error");
