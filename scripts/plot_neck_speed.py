@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Plot the Stokes neck speed on Hopper's exact shape against the finest
-cell size, one line per initial neck (doc/validation_data/hopper_neck_speed.csv).
+cell size, one line per initial neck
+(doc/validation_data/archive/hopper_neck_speed.csv).
 
 usage: plot_neck_speed.py hopper_neck_speed.csv OUT.png
 """

@@ -82,6 +82,16 @@ add_test(NAME architecture_layers
   COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/check_layers.py
     ${CMAKE_SOURCE_DIR})
 
+# --- doc/validation.md traces to the tests -------------------------------
+# Every CSV in doc/validation_data/ (outside archive/) is written by a
+# registered test (its --csv argument), every PNG there is shown in
+# doc/validation.md, and every data file, script and test the document
+# names exists.
+add_test(NAME validation_index
+  COMMAND ${Python3_EXECUTABLE}
+    ${CMAKE_SOURCE_DIR}/scripts/check_validation_index.py ${CMAKE_SOURCE_DIR}
+    ${CMAKE_BINARY_DIR} ${CMAKE_CTEST_COMMAND})
+
 # --- Command line and bad input ------------------------------------------
 add_test(NAME help COMMAND levelsinter --help)
 set_tests_properties(help PROPERTIES PASS_REGULAR_EXPRESSION "Usage:")
