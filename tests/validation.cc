@@ -85,7 +85,7 @@ namespace
   void
   exact_measures(const SceneParameters &scene, double &volume, double &area)
   {
-    if (scene.geometry.shape == "slotted disk")
+    if (scene.geometry.shape == GeometryParameters::Shape::slotted_disk)
       {
         const auto *disk = dynamic_cast<const SlottedDisk *>(
           make_initial_signed_distance<2>(scene).get());
