@@ -161,7 +161,7 @@ namespace
                 "validation_output/sd_" + std::to_string(dim) + "d_n" +
                 std::to_string(mode) + "_l" + std::to_string(level) + "_s" +
                 std::to_string(steps) +
-                (base.volume_correction ? "_vc" : "") +
+                (base.volume_correction.enabled ? "_vc" : "") +
                 (sign < 0 ? "_minus" : "");
               std::filesystem::create_directories(output);
               auto overrides = options.overrides;
@@ -388,7 +388,7 @@ namespace
     // t* = C_s t / Rbar^4, whatever time unit the scene runs in.
     const auto  &sd = scene.surface_diffusion;
     const double t_star_per_t =
-      sd.time_unit == "reduced" ?
+      sd.time_unit == SurfaceDiffusionParameters::TimeUnit::reduced ?
         std::pow(sd.reference_radius / r_bar, 4) :
         sd.surface_mobility() / std::pow(r_bar, 4);
 

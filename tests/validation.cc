@@ -85,7 +85,7 @@ namespace
   void
   exact_measures(const SceneParameters &scene, double &volume, double &area)
   {
-    if (scene.geometry.shape == "slotted disk")
+    if (scene.geometry.shape == GeometryParameters::Shape::slotted_disk)
       {
         // Keep the function alive while the disk is read.
         const auto  distance = make_initial_signed_distance<2>(scene);

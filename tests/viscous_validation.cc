@@ -273,6 +273,7 @@ namespace
           const double R     = scene.geometry.particles[0][dim];
 
           ViscousFlow<dim>   flow(scene.viscous_flow,
+                                scene.domain.symmetry_planes,
                                 simulation.filter(),
                                 scene.refinement.max_level,
                                 simulation.timer());
@@ -848,7 +849,7 @@ namespace
         const double area   = run.metrics.column("solid_volume").back();
         const double length = run.metrics.column("interface_area").back();
         const double parts =
-          std::pow(2., run.scene.viscous_flow.symmetry_boundaries.size());
+          std::pow(2., run.scene.domain.symmetry_planes.size());
         const double radius = std::sqrt(parts * area / M_PI);
         table.add(run_row(
           level,

@@ -246,9 +246,10 @@ namespace levelsinter
   std::unique_ptr<Function<dim>>
   make_initial_signed_distance(const SceneParameters &scene)
   {
-    if (scene.geometry.shape == "particles")
+    if (scene.geometry.shape == GeometryParameters::Shape::particles)
       return std::make_unique<UnionOfBalls<dim>>(scene.geometry.particles);
-    if (scene.geometry.shape == "perturbed particle")
+    if (scene.geometry.shape ==
+        GeometryParameters::Shape::perturbed_particle)
       {
         const auto &particle = scene.geometry.particles.at(0);
         Point<dim>  centre;

@@ -14,15 +14,6 @@ namespace levelsinter
       throw std::invalid_argument("the filter thickness must be positive");
   }
 
-  LevelSetFilter::LevelSetFilter(const std::string &name,
-                                 const double       thickness)
-    : LevelSetFilter(name == "tanh" ? Type::tanh : Type::sine, thickness)
-  {
-    if (name != "sine" && name != "tanh")
-      throw std::invalid_argument("unknown level-set filter '" + name +
-                                  "' (allowed: sine, tanh)");
-  }
-
   double
   LevelSetFilter::saturation() const
   {

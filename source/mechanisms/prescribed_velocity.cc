@@ -68,15 +68,15 @@ namespace levelsinter
   std::unique_ptr<Function<dim>>
   make_prescribed_velocity(const SceneParameters::Velocity &parameters)
   {
-    if (parameters.type == "none")
+    if (parameters.type == PrescribedVelocityParameters::Type::none)
       return std::make_unique<Functions::ZeroFunction<dim>>(dim);
-    if (parameters.type == "constant")
+    if (parameters.type == PrescribedVelocityParameters::Type::constant)
       {
         std::vector<double> v(parameters.constant.begin(),
                               parameters.constant.begin() + dim);
         return std::make_unique<Functions::ConstantFunction<dim>>(v);
       }
-    if (parameters.type == "rotation")
+    if (parameters.type == PrescribedVelocityParameters::Type::rotation)
       {
         Tensor<1, 3> axis;
         for (unsigned int d = 0; d < 3; ++d)

@@ -11,7 +11,7 @@ namespace levelsinter
   make_scene_mechanisms(const SceneParameters &scene, TimerOutput &timer)
   {
     std::vector<std::unique_ptr<Mechanism<dim>>> mechanisms;
-    if (scene.velocity.type != "none")
+    if (scene.velocity.type != PrescribedVelocityParameters::Type::none)
       mechanisms.push_back(std::make_unique<PrescribedVelocity<dim>>(
         scene.velocity, scene.level_set.theta));
     const LevelSetFilter filter(scene.level_set.filter,
@@ -19,6 +19,7 @@ namespace levelsinter
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
         std::make_unique<ViscousFlow<dim>>(scene.viscous_flow,
+                                           scene.domain.symmetry_planes,
                                            filter,
                                            scene.refinement.max_level,
                                            timer));
@@ -26,7 +27,7 @@ namespace levelsinter
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));
     // Last: it corrects the volume whatever the others moved.
-    if (scene.volume_correction)
+    if (scene.volume_correction.enabled)
       mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(filter));
     return mechanisms;
   }

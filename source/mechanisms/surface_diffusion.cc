@@ -9,7 +9,7 @@ namespace levelsinter
     double
     coefficient_in_scene_time(const SceneParameters::SurfaceDiffusion &p)
     {
-      if (p.time_unit == "reduced")
+      if (p.time_unit == SurfaceDiffusionParameters::TimeUnit::reduced)
         return std::pow(p.reference_radius, 4);
       return p.surface_mobility();
     }
@@ -23,7 +23,8 @@ namespace levelsinter
     : mobility(coefficient_in_scene_time(parameters))
     , solver(filter,
              {parameters.coupled,
-              parameters.linear_solver == "direct",
+              parameters.linear_solver ==
+                SurfaceDiffusionParameters::LinearSolver::direct,
               parameters.solver_tolerance,
               1000},
              timer)

@@ -16,11 +16,14 @@
 namespace levelsinter
 {
   template <int dim>
-  ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters,
-                                const LevelSetFilter        &filter,
+  ViscousFlow<dim>::ViscousFlow(
+    const ViscousFlowParameters           &parameters,
+    const std::vector<types::boundary_id> &symmetry_planes,
+    const LevelSetFilter                  &filter,
                                 const unsigned int           band_level,
                                 TimerOutput                 &timer)
     : parameters(parameters)
+    , symmetry_planes(symmetry_planes)
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
@@ -39,16 +42,18 @@ namespace levelsinter
     typename TwoPhaseStokes<dim>::Settings settings;
     settings.surface_tension = parameters.surface_tension;
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
-    settings.form = parameters.surface_tension_form == "csf" ? Form::csf :
-                    parameters.surface_tension_form == "sharp" ?
-                                                               Form::sharp :
-                                                               Form::csf_curvature;
+    using Choice = ViscousFlowParameters::SurfaceTensionForm;
+    settings.form = parameters.surface_tension_form == Choice::csf ? Form::csf :
+                    parameters.surface_tension_form == Choice::sharp ?
+                                                                     Form::sharp :
+                                                                     Form::csf_curvature;
     settings.interface_half_width_cells = parameters.interface_half_width;
     settings.band_level                 = band_level;
     settings.stabilisation_constant = parameters.stabilisation_constant;
     settings.external_pressure      = parameters.external_pressure;
-    settings.symmetry_boundaries    = parameters.symmetry_boundaries;
-    settings.direct_solver          = parameters.direct_solver;
+    settings.symmetry_boundaries    = symmetry_planes;
+    settings.direct_solver          = parameters.linear_solver ==
+                                      ViscousFlowParameters::LinearSolver::direct;
     settings.tolerance              = parameters.solver_tolerance;
     settings.max_iterations         = parameters.max_iterations;
     // The DoFHandler is tied to the triangulation, which the time loop

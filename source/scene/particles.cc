@@ -2,6 +2,8 @@
 
 #include <levelsinter/scene/particles.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -11,31 +13,44 @@ namespace levelsinter
 {
   namespace
   {
-    // Parse one particle "x, y[, z], r"; returns an empty string on success,
-    // or what is wrong.
+    // Parse one particle from a row whose fields hold x, y[, z], r at
+    // column[0..dim]; returns an empty string on success, or what is wrong.
     std::string
-    parse_particle(const std::string   &text,
-                   const unsigned int   dim,
-                   std::vector<double> &particle)
+    parse_particle(const std::string               &text,
+                   const std::vector<unsigned int> &column,
+                   std::vector<double>             &particle)
     {
-      const auto fields = dealii::Utilities::split_string_list(text, ',');
+      const unsigned int dim    = column.size() - 1;
+      const auto         fields = dealii::Utilities::split_string_list(text, ',');
       if (fields.size() != dim + 1)
         return "expected " + std::to_string(dim + 1) + " values (" +
                (dim == 2 ? std::string("x, y, r") : "x, y, z, r") +
                "), found " + std::to_string(fields.size()) + " in '" + text +
                "'";
-      particle.clear();
+      std::vector<double> values;
       for (const auto &f : fields)
         {
           std::istringstream in(f);
           double             v;
           if (!(in >> v) || !(in >> std::ws).eof() || !std::isfinite(v))
             return "'" + f + "' is not a number";
-          particle.push_back(v);
+          values.push_back(v);
         }
+      particle.resize(dim + 1);
+      for (unsigned int k = 0; k <= dim; ++k)
+        particle[k] = values[column[k]];
       if (!(particle.back() > 0))
-        return "the radius must be positive, found " + fields.back();
+        return "the radius must be positive, found " + fields[column.back()];
       return "";
+    }
+
+    std::vector<unsigned int>
+    in_order(const unsigned int dim)
+    {
+      std::vector<unsigned int> column(dim + 1);
+      for (unsigned int k = 0; k <= dim; ++k)
+        column[k] = k;
+      return column;
     }
   } // namespace
 
@@ -52,7 +67,7 @@ namespace levelsinter
         if (item.empty())
           continue;
         std::vector<double> p;
-        const std::string   error = parse_particle(item, dim, p);
+        const std::string   error = parse_particle(item, in_order(dim), p);
         if (!error.empty())
           throw std::runtime_error("entry '" + entry_name + "', particle " +
                                    std::to_string(index) + ": " + error);
@@ -68,44 +83,85 @@ namespace levelsinter
     if (!in)
       throw std::runtime_error("particle file '" + file_name +
                                "' cannot be opened for reading");
+    const std::vector<std::string> names =
+      dim == 2 ? std::vector<std::string>{"x", "y", "r"} :
+                 std::vector<std::string>{"x", "y", "z", "r"};
+    const std::string expected = dim == 2 ? "x,y,r" : "x,y,z,r";
+    // column[k]: where the k-th of x, y[, z], r stands in a row.
+    std::vector<unsigned int>        column;
     std::vector<std::vector<double>> particles;
     std::string                      line;
     unsigned int                     line_number = 0;
-    bool                             header_seen = false;
     while (std::getline(in, line))
       {
         ++line_number;
         const std::string trimmed = dealii::Utilities::trim(line);
         if (trimmed.empty() || trimmed[0] == '#')
           continue;
-        if (!header_seen)
+        const auto where = [&]() {
+          return "particle file '" + file_name + "', line " +
+                 std::to_string(line_number) + ": ";
+        };
+        if (column.empty())
           {
-            // The header names the columns; a numeric first line means the
-            // header is missing, which we refuse rather than guess.
-            std::istringstream probe(trimmed);
-            double             v;
-            if (probe >> v)
+            // The header names the columns; anything else (a numeric first
+            // line, other names) is refused rather than guessed.
+            auto header = dealii::Utilities::split_string_list(trimmed, ',');
+            for (auto &h : header)
+              std::transform(h.begin(), h.end(), h.begin(), [](unsigned char c) {
+                return std::tolower(c);
+              });
+            for (const auto &name : names)
+              {
+                const auto at = std::find(header.begin(), header.end(), name);
+                if (at == header.end() ||
+                    std::count(header.begin(), header.end(), name) != 1)
+                  break;
+                column.push_back(at - header.begin());
+              }
+            if (header.size() != names.size() || column.size() != names.size())
               throw std::runtime_error(
-                "particle file '" + file_name + "', line " +
-                std::to_string(line_number) +
-                ": expected a header line such as '" +
-                (dim == 2 ? std::string("x,y,r") : "x,y,z,r") +
-                "' before the data");
-            header_seen = true;
+                where() + "the header '" + trimmed + "' must name the " +
+                std::to_string(dim) + "D columns '" + expected +
+                "' (any order, case and spaces ignored)");
             continue;
           }
         std::vector<double> p;
-        const std::string   error = parse_particle(trimmed, dim, p);
+        const std::string   error = parse_particle(trimmed, column, p);
         if (!error.empty())
-          throw std::runtime_error("particle file '" + file_name +
-                                   "', line " + std::to_string(line_number) +
-                                   ": " + error);
+          throw std::runtime_error(where() + error);
         particles.push_back(p);
       }
     if (particles.empty())
       throw std::runtime_error("particle file '" + file_name +
                                "' holds no particle");
     return particles;
+  }
+
+  void
+  check_distinct_centres(const std::vector<std::vector<double>> &particles)
+  {
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      for (unsigned int j = i + 1; j < particles.size(); ++j)
+        {
+          const auto  &p = particles[i], &q = particles[j];
+          const auto   dim  = p.size() - 1;
+          const double tol  = 1e-12 * std::max(p[dim], q[dim]);
+          bool         same = true;
+          for (unsigned int k = 0; k < dim; ++k)
+            same = same && std::abs(p[k] - q[k]) <= tol;
+          if (same)
+            {
+              std::ostringstream msg;
+              msg << "entry 'Geometry/Particles' (with the particle file "
+                     "appended): particles "
+                  << i + 1 << " and " << j + 1 << " have the same centre (";
+              for (unsigned int k = 0; k < dim; ++k)
+                msg << (k ? ", " : "") << p[k];
+              msg << "); remove one of them";
+              throw std::runtime_error(msg.str());
+            }
+        }
   }
 
   void

@@ -1,24 +1,14 @@
-#include <deal.II/base/utilities.h>
-
+#include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
-#include <algorithm>
-#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace levelsinter
 {
-  namespace
-  {
-    [[noreturn]] void
-    fail(const std::string &entry, const std::string &message)
-    {
-      throw std::runtime_error("entry 'Viscous flow/" + entry + "': " +
-                               message);
-    }
-  } // namespace
-
   void
-  ViscousFlowParameters::declare_parameters(ParameterHandler &prm)
+  ViscousFlowParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscous flow");
     {
@@ -30,22 +20,26 @@ namespace levelsinter
       prm.declare_entry("Surface tension",
                         "1",
                         Patterns::Double(0),
-                        "gamma on alpha = 0 (N/m).");
+                        "gamma on alpha = 0, in N/m (in a scene without "
+                        "material data: solid viscosity x length unit per "
+                        "scene time unit). Must be positive when viscous "
+                        "flow is enabled.");
       prm.declare_entry("Solid viscosity",
                         "1",
                         Patterns::Double(0),
-                        "eta_s of the particles (Pa s).");
+                        "eta_s of the particles, in Pa s (or the scene's "
+                        "viscosity unit, e.g. 1).");
       prm.declare_entry("Fluid viscosity",
                         "1e-3",
                         Patterns::Double(0),
-                        "eta_f of the atmosphere (Pa s); eta_f/eta_s down to "
-                        "1e-6.");
+                        "eta_f of the atmosphere, same unit as the solid "
+                        "viscosity; eta_f/eta_s down to 1e-6.");
       prm.declare_entry("Fluid compressibility",
                         "1",
                         Patterns::Double(0),
-                        "c in div v = -c p / eta_f in the atmosphere (its bulk "
-                        "viscosity is eta_f / c); lets closed pores shrink. "
-                        "0: incompressible atmosphere.");
+                        "c in div v = -c p / eta_f in the atmosphere (no "
+                        "unit; its bulk viscosity is eta_f / c); lets closed "
+                        "pores shrink. 0: incompressible atmosphere.");
       prm.declare_entry("Surface tension form",
                         "sharp",
                         Patterns::Selection("csf|sharp|csf-curvature"),
@@ -69,28 +63,25 @@ namespace levelsinter
                         "1.5",
                         Patterns::Double(0),
                         "E of the smoothed Heaviside and Dirac (Eq. 102-104), "
-                        "in cell sizes: E = this x h_K in each cell K, so "
+                        "in cell sizes (no unit): E = this x h_K in each cell K, so "
                         "the jump spans the same number of cells on the "
                         "band and on cells refined further at necks; cells "
                         "coarser than the band use the band cells' size.");
       prm.declare_entry("Stabilisation constant",
                         "0.1",
                         Patterns::Double(0),
-                        "c in the ASGS parameter tau_K = c a2 h_K^2 / a1 "
-                        "(Eq. 99 has c = 1). The smearing of the Laplace "
+                        "c in the ASGS parameter tau_K = c a2 h_K^2 / a1 (no "
+                        "unit; "
+                        "Eq. 99 has c = 1). The smearing of the Laplace "
                         "jump and the solid-volume drift grow with c, the "
                         "solver iterations shrink (doc/validation.md).");
       prm.declare_entry("External pressure",
                         "0",
                         Patterns::Double(),
-                        "p_ext on the free box faces (traction -p_ext n).");
-      prm.declare_entry("Symmetry planes",
-                        "",
-                        Patterns::MultipleSelection("x-|x+|y-|y+|z-|z+"),
-                        "Box faces with zero normal velocity. The rigid "
-                        "motion the planes leave free is removed from the "
-                        "velocity (no drift of the particles as a whole).");
-      prm.declare_entry("Solver",
+                        "p_ext on the free box faces (traction -p_ext n), in "
+                        "Pa (or the scene's stress unit, surface tension "
+                        "per length unit).");
+      prm.declare_entry("Linear solver",
                         "iterative",
                         Patterns::Selection("iterative|direct"),
                         "iterative: FGMRES with the block preconditioner "
@@ -108,45 +99,45 @@ namespace levelsinter
                         "1",
                         Patterns::Double(0),
                         "c in the explicit capillary limit dt <= c eta_s "
-                        "h_min / gamma; 0 disables it. Not applied with "
+                        "h_min / gamma (no unit); 0 disables it. Not applied with "
                         "semi-implicit surface tension.");
     }
     prm.leave_subsection();
   }
 
   void
-  ViscousFlowParameters::parse_parameters(ParameterHandler  &prm,
-                                          const unsigned int dimension)
+  ViscousFlowParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscous flow");
-    enabled                = prm.get_bool("Enabled");
-    surface_tension        = prm.get_double("Surface tension");
-    solid_viscosity        = prm.get_double("Solid viscosity");
-    fluid_viscosity        = prm.get_double("Fluid viscosity");
-    fluid_compressibility  = prm.get_double("Fluid compressibility");
-    surface_tension_form   = prm.get("Surface tension form");
+    enabled               = prm.get_bool("Enabled");
+    surface_tension       = prm.get_double("Surface tension");
+    solid_viscosity       = prm.get_double("Solid viscosity");
+    fluid_viscosity       = prm.get_double("Fluid viscosity");
+    fluid_compressibility = prm.get_double("Fluid compressibility");
+    surface_tension_form  = read_selection<SurfaceTensionForm>(
+      prm,
+      "Viscous flow",
+      "Surface tension form",
+      {{"csf", SurfaceTensionForm::csf},
+       {"sharp", SurfaceTensionForm::sharp},
+       {"csf-curvature", SurfaceTensionForm::csf_curvature}});
     semi_implicit_surface_tension =
-      prm.get("Surface tension time integration") == "semi-implicit";
+      read_selection<bool>(prm,
+                           "Viscous flow",
+                           "Surface tension time integration",
+                           {{"explicit", false}, {"semi-implicit", true}});
     interface_half_width   = prm.get_double("Interface half width");
     stabilisation_constant = prm.get_double("Stabilisation constant");
     external_pressure      = prm.get_double("External pressure");
-    direct_solver          = prm.get("Solver") == "direct";
-    solver_tolerance       = prm.get_double("Solver tolerance");
-    max_iterations         = prm.get_integer("Maximum solver iterations");
+    linear_solver          = read_selection<LinearSolver>(
+      prm,
+      "Viscous flow",
+      "Linear solver",
+      {{"iterative", LinearSolver::iterative},
+       {"direct", LinearSolver::direct}});
+    solver_tolerance           = prm.get_double("Solver tolerance");
+    max_iterations             = prm.get_integer("Maximum solver iterations");
     capillary_time_step_factor = prm.get_double("Capillary time step factor");
-    const std::vector<std::string> faces = {"x-", "x+", "y-", "y+", "z-", "z+"};
-    symmetry_boundaries.clear();
-    for (const auto &name :
-         Utilities::split_string_list(prm.get("Symmetry planes"), ','))
-      {
-        const auto id = std::find(faces.begin(), faces.end(), name) -
-                        faces.begin();
-        if (id >= 2 * int(dimension))
-          fail("Symmetry planes",
-               "'" + name + "' is not a face of a " +
-                 std::to_string(dimension) + "D box");
-        symmetry_boundaries.push_back(id);
-      }
     prm.leave_subsection();
 
     if (!enabled)
@@ -158,6 +149,14 @@ namespace levelsinter
       {stabilisation_constant, "Stabilisation constant"}};
     for (const auto &[value, entry] : positive)
       if (value <= 0)
-        fail(entry, "must be positive");
+        fail_entry("Viscous flow/" + entry,
+                   "must be positive when viscous flow is enabled");
+    // Without surface tension and external pressure nothing drives the
+    // flow: the right-hand side is zero, the solver returns at once and
+    // the run would only repeat t = 0.
+    if (surface_tension == 0 && external_pressure == 0)
+      fail_entry("Viscous flow/Surface tension",
+                 "must be positive when viscous flow is enabled and "
+                 "External pressure is 0: nothing else drives the flow");
   }
 } // namespace levelsinter

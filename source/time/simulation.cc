@@ -61,7 +61,7 @@ namespace levelsinter
     , initial_distance(make_initial_signed_distance<dim>(scene))
     , band_refinement(scene.refinement,
                       level_set_filter,
-                      scene.viscous_flow.symmetry_boundaries)
+                      scene.domain.symmetry_planes)
     , transport(level_set_filter,
                 {scene.level_set.theta,
                  scene.level_set.solver_tolerance,
@@ -80,6 +80,8 @@ namespace levelsinter
   {
     if (scene.dimension != dim)
       throw std::logic_error("Simulation<dim> built for the wrong dimension");
+    for (const auto &warning : scene.warnings)
+      pcout << "warning: " << warning << std::endl;
   }
 
   template <int dim>
@@ -290,7 +292,7 @@ namespace levelsinter
         // The neck of two particles; in a packing the smallest neck over
         // the pairs that overlap at t = 0.
         const auto &particles = scene.geometry.particles;
-        if (scene.geometry.shape == "particles" && particles.size() >= 2)
+        if (scene.geometry.shape == GeometryParameters::Shape::particles && particles.size() >= 2)
           {
             const double neck =
               neck_measures::smallest_neck_radius(alpha, particles);

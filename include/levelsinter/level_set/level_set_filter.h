@@ -1,6 +1,6 @@
 #pragma once
 
-#include <string>
+#include <levelsinter/scene/level_set_parameters.h>
 
 namespace levelsinter
 {
@@ -16,16 +16,10 @@ namespace levelsinter
   class LevelSetFilter
   {
   public:
-    enum class Type
-    {
-      sine,
-      tanh
-    };
+    // The choice of `Level set/Filter`.
+    using Type = LevelSetParameters::Filter;
 
     LevelSetFilter(const Type type, const double thickness);
-
-    /** Build from the parameter-file name ("sine" or "tanh"). */
-    LevelSetFilter(const std::string &type, const double thickness);
 
     /** alpha(d). */
     double

@@ -30,13 +30,16 @@ namespace levelsinter
   {
   public:
     /**
-     * @p band_level: the refinement level of the interface band, where the
-     * smoothing width E of the phases is set (TwoPhaseStokes::Settings).
+     * @p symmetry_planes: `Domain/Symmetry planes`, faces with zero normal
+     * velocity. @p band_level: the refinement level of the interface band,
+     * where the smoothing width E of the phases is set
+     * (TwoPhaseStokes::Settings).
      */
-    ViscousFlow(const ViscousFlowParameters &parameters,
-                const LevelSetFilter        &filter,
-                const unsigned int           band_level,
-                TimerOutput                 &timer);
+    ViscousFlow(const ViscousFlowParameters           &parameters,
+                const std::vector<types::boundary_id> &symmetry_planes,
+                const LevelSetFilter                  &filter,
+                const unsigned int                     band_level,
+                TimerOutput                           &timer);
 
     void
     setup(const LevelSetField<dim> &alpha) override;
@@ -113,6 +116,7 @@ namespace levelsinter
     update_curvature(const LevelSetField<dim> &alpha);
 
     const ViscousFlowParameters          parameters;
+    const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                 filter;
     const unsigned int                   band_level;
     TimerOutput                         &timer;

@@ -16,11 +16,22 @@ namespace levelsinter
                          const std::string &entry_name);
 
   /**
-   * Read a CSV file with a header line and rows "x,y,r" (2D) or "x,y,z,r"
-   * (3D). Blank lines and lines starting with '#' are skipped.
+   * Read a CSV file with a header line naming the columns x, y, r (2D) or
+   * x, y, z, r (3D) in any order (case-insensitive, spaces trimmed), then
+   * one particle per row. Blank lines and lines starting with '#' are
+   * skipped. A header that does not name exactly these columns is an error
+   * naming the file and line.
    */
   std::vector<std::vector<double>>
   read_particle_file(const std::string &file_name, const unsigned int dim);
+
+  /**
+   * Two particles with the same centre (to 1e-12 of the larger radius)
+   * are an error naming both: one hides the other, or the list was pasted
+   * twice.
+   */
+  void
+  check_distinct_centres(const std::vector<std::vector<double>> &particles);
 
   /**
    * A particle may stick out of the box only through a face it is symmetric

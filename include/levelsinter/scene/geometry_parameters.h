@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <levelsinter/scene/domain_parameters.h>
+
+#include <string>
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /** The `Geometry` subsection: the solid at t = 0. */
+  struct GeometryParameters
+  {
+    enum class Shape
+    {
+      particles,
+      slotted_disk,
+      // The first particle, radius modulated by one mode (Mullins test of
+      // surface diffusion).
+      perturbed_particle
+    };
+
+    static void
+    declare(ParameterHandler &prm);
+
+    /**
+     * Read the entries and the particle file (relative to
+     * @p scene_directory), check the particles against each other and
+     * against @p domain; throws std::runtime_error naming the entry.
+     */
+    void
+    parse(ParameterHandler       &prm,
+          const unsigned int      dimension,
+          const std::string      &scene_directory,
+          const DomainParameters &domain);
+
+    Shape shape = Shape::particles;
+    // Inline particles and the particle file are merged: x, y[, z], r.
+    std::vector<std::vector<double>> particles;
+    std::string                      particle_file;
+    std::vector<double>              slotted_disk_centre;
+    double                           slotted_disk_radius    = 0;
+    double                           slot_width             = 0;
+    double                           slot_depth             = 0;
+    double                           perturbation_amplitude = 0;
+    unsigned int                     perturbation_mode      = 2;
+  };
+} // namespace levelsinter

@@ -1,0 +1,58 @@
+#include <levelsinter/scene/output_parameters.h>
+#include <levelsinter/scene/parameter_entries.h>
+
+namespace levelsinter
+{
+  void
+  OutputParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    {
+      prm.declare_entry("Directory",
+                        "output",
+                        Patterns::Anything(),
+                        "Directory for fields and metrics.csv; created if "
+                        "missing. Relative paths are relative to the current "
+                        "working directory.");
+      prm.declare_entry("Field interval",
+                        "10",
+                        Patterns::Integer(0),
+                        "Write fields every this many steps (0 = first and "
+                        "last step only).");
+      prm.declare_entry("Field formats",
+                        "vtu, xdmf",
+                        Patterns::MultipleSelection("vtu|xdmf|none"),
+                        "vtu: PVD/PVTU/VTU series; xdmf: XDMF + HDF5; none.");
+      prm.declare_entry("Metrics interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Append a row to metrics.csv every this many steps "
+                        "(the first and last step are always written).");
+      prm.declare_entry("Progress interval",
+                        "10",
+                        Patterns::Integer(0),
+                        "Print a progress line every this many steps (0 = "
+                        "never).");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory         = prm.get("Directory");
+    field_interval    = prm.get_integer("Field interval");
+    const std::string formats = prm.get("Field formats");
+    write_vtu  = formats.find("vtu") != std::string::npos;
+    write_xdmf = formats.find("xdmf") != std::string::npos;
+    if (formats.find("none") != std::string::npos &&
+        (write_vtu || write_xdmf))
+      fail_entry("Output/Field formats", "'none' cannot be combined with a format");
+    metrics_interval  = prm.get_integer("Metrics interval");
+    progress_interval = prm.get_integer("Progress interval");
+    if (directory.empty())
+      fail_entry("Output/Directory", "must not be empty");
+    prm.leave_subsection();
+  }
+} // namespace levelsinter
