@@ -3,7 +3,8 @@
 
 Each RUN is an output directory (holding metrics.csv) or a metrics.csv
 itself; its curves are labelled with the run directory. Every column given
-with --y gets its own panel, sharing the x axis (--x, default time).
+with --y gets its own panel, sharing the x axis (--x, default time). Give
+the runs before --y.
 
 examples:
   plot_metrics.py output/two_cylinders_2d --y neck_radius -o neck.png
@@ -43,9 +44,9 @@ def column(rows, name, label):
 
 
 def main():
+    description, examples = __doc__.split("examples:")
     parser = argparse.ArgumentParser(
-        description=__doc__.split("\n")[0],
-        epilog="\n".join(__doc__.split("\n")[4:]),
+        description=description, epilog="examples:" + examples,
         formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("runs", nargs="+", metavar="RUN",
                         help="output directory or metrics.csv")
@@ -77,7 +78,10 @@ def main():
                     "-", marker="." if len(rows) < 60 else None, label=label)
         ax.set_ylabel(name)
         ax.set_xscale("log" if args.logx else "linear")
-        ax.set_yscale("log" if args.logy else "linear")
+        if args.logy:
+            ax.set_yscale("log")
+        else:  # values, not an offset + small ticks
+            ax.ticklabel_format(axis="y", useOffset=False)
         ax.grid(True, which="both", alpha=0.3)
     axes[0, 0].legend(fontsize=8)
     axes[-1, 0].set_xlabel(args.x)
