@@ -148,7 +148,8 @@ main(int argc, char **argv)
       const SceneParameters scene =
         read_scene(prm, command_line.scene_file, command_line.overrides);
       prm.enter_subsection("Output");
-      const bool overwrite = command_line.overwrite || prm.get_bool("Overwrite");
+      const bool overwrite =
+        command_line.overwrite || prm.get_bool("Overwrite");
       prm.leave_subsection();
       std::ostringstream parameters;
       prm.print_parameters(parameters, dealii::ParameterHandler::PRM);

@@ -62,9 +62,10 @@ namespace levelsinter
     // Who gave the value that parse_parameters() rejected: the --set of the
     // entry its message names (the last one if given twice), else the file.
     std::string
-    source_of(const std::string                                      &message,
-              const std::string                                      &scene_file,
-              const std::vector<std::pair<std::string, std::string>> &overrides)
+    source_of(
+      const std::string                                      &message,
+      const std::string                                      &scene_file,
+      const std::vector<std::pair<std::string, std::string>> &overrides)
     {
       for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
         if (message.find("'" + o->first + "'") != std::string::npos)

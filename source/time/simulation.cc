@@ -367,12 +367,12 @@ namespace levelsinter
       {
         // The run ends at the end time or after the step limit, whichever
         // comes first.
-        const double eta = final_step ? 0. :
-                                        remaining_time.estimate(
-                                          scene.time.end_time,
-                                          scene.time.max_steps > 0 ?
-                                            double(scene.time.max_steps) - step :
-                                            std::numeric_limits<double>::max());
+        const double steps_left =
+          scene.time.max_steps > 0 ? double(scene.time.max_steps) - step :
+                                     std::numeric_limits<double>::max();
+        const double eta =
+          final_step ? 0. :
+                       remaining_time.estimate(scene.time.end_time, steps_left);
         pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
               << std::setprecision(5) << t << " / " << scene.time.end_time
               << "  dt = " << std::setw(10) << std::setprecision(3) << dt
@@ -484,7 +484,8 @@ namespace levelsinter
         const bool finished =
           !(t < end_time * (1 - 1e-12)) ||
           (scene.time.max_steps > 0 && step >= scene.time.max_steps);
-        const int signal = finished ? 0 : Utilities::MPI::max(int(stop_signal), comm);
+        const int signal =
+          finished ? 0 : Utilities::MPI::max(int(stop_signal), comm);
         record(step, t, dt, finished || signal != 0);
         if (step_observer)
           step_observer(step, t, alpha);
