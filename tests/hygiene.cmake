@@ -77,3 +77,9 @@ add_test(NAME plot_metrics COMMAND sh -c
   "rm -f plot_metrics.png && ${CMAKE_SOURCE_DIR}/scripts/plot_metrics.py mpi_np1 mpi_np2 --y solid_volume interface_area cells -o plot_metrics.png && test -s plot_metrics.png")
 set_tests_properties(plot_metrics PROPERTIES
   FIXTURES_REQUIRED "mpi_np1;mpi_np2")
+
+# The ETA for fixed and growing steps against the exact time left.
+add_executable(remaining_time_test remaining_time_test.cc)
+target_link_libraries(remaining_time_test levelsinter_lib)
+deal_ii_setup_target(remaining_time_test)
+add_test(NAME remaining_time COMMAND remaining_time_test)
