@@ -11,6 +11,7 @@
 #include <ctime>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace
@@ -60,6 +61,7 @@ namespace
   template <int dim>
   int
   run(const SceneParameters &scene,
+      const CommandLine     &command_line,
       const bool             overwrite,
       const std::string     &record,
       const std::string     &parameters,
@@ -76,7 +78,19 @@ namespace
       // Everything is checked (the scene, the mechanisms it builds, the
       // output directory) before the earlier run is removed and anything
       // is written.
-      Simulation<dim> simulation(scene, comm, std::cout);
+      std::optional<Simulation<dim>> simulation;
+      try
+        {
+          simulation.emplace(scene, comm, std::cout);
+        }
+      catch (const std::runtime_error &e)
+        {
+          // Building the mechanisms checks their entries, e.g. an
+          // expression.
+          throw std::runtime_error(with_source(e.what(),
+                                               command_line.scene_file,
+                                               command_line.overrides));
+        }
       try
         {
           run_directory::prepare(scene.output.directory, overwrite, comm);
@@ -85,7 +99,7 @@ namespace
                                           parameters,
                                           comm);
           started            = true;
-          const auto summary = simulation.run();
+          const auto summary = simulation->run();
           stop_signal        = summary.stop_signal;
           if (root && stop_signal != 0)
             std::cout << "stopped by "
@@ -105,7 +119,7 @@ namespace
           failure = e.what();
         }
       if (started)
-        simulation.timer().print_wall_time_statistics(comm);
+        simulation->timer().print_wall_time_statistics(comm);
     }
     if (!failure.empty())
       throw std::runtime_error(failure);
@@ -157,8 +171,18 @@ main(int argc, char **argv)
 
       stop_on_signals();
       return scene.dimension == 2 ?
-               run<2>(scene, overwrite, record, parameters.str(), comm) :
-               run<3>(scene, overwrite, record, parameters.str(), comm);
+               run<2>(scene,
+                      command_line,
+                      overwrite,
+                      record,
+                      parameters.str(),
+                      comm) :
+               run<3>(scene,
+                      command_line,
+                      overwrite,
+                      record,
+                      parameters.str(),
+                      comm);
     }
   catch (const std::exception &e)
     {

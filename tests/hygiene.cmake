@@ -55,6 +55,9 @@ set_tests_properties(print_scene_parameters PROPERTIES PASS_REGULAR_EXPRESSION
 bad_input_test(set_named "--set 'Mesh refinement/Band width=0.05': entry"
   --set "Mesh refinement/Band width=0.05"
   ${CMAKE_SOURCE_DIR}/parameter_files/closed_pore_2d.prm)
+bad_input_test(set_named_mechanism
+  "--set 'Velocity/Expression constants=U': entry"
+  --set "Velocity/Expression constants=U" ${SCENE})
 bad_input_test(scene_is_directory "is a directory, not a parameter file"
   ${HYGIENE})
 

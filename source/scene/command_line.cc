@@ -59,20 +59,6 @@ namespace levelsinter
         prm.leave_subsection();
     }
 
-    // Who gave the value that parse_parameters() rejected: the --set of the
-    // entry its message names (the last one if given twice), else the file.
-    std::string
-    source_of(
-      const std::string                                      &message,
-      const std::string                                      &scene_file,
-      const std::vector<std::pair<std::string, std::string>> &overrides)
-    {
-      for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
-        if (message.find("'" + o->first + "'") != std::string::npos)
-          return "--set '" + o->first + "=" + o->second + "'";
-      return scene_file.empty() ? std::string("scene") :
-                                  "scene file '" + scene_file + "'";
-    }
   } // namespace
 
   std::string
@@ -181,6 +167,20 @@ namespace levelsinter
       apply_override(prm, path, value);
   }
 
+  std::string
+  with_source(
+    const std::string                                      &message,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (message.find("'" + o->first + "'") != std::string::npos)
+        return "--set '" + o->first + "=" + o->second + "': " + message;
+    return (scene_file.empty() ? std::string("scene") :
+                                 "scene file '" + scene_file + "'") +
+           ": " + message;
+  }
+
   SceneParameters
   read_scene(ParameterHandler  &prm,
              const std::string &scene_file,
@@ -200,8 +200,8 @@ namespace levelsinter
       }
     catch (const std::runtime_error &e)
       {
-        throw std::runtime_error(source_of(e.what(), scene_file, overrides) +
-                                 ": " + e.what());
+        throw std::runtime_error(
+          with_source(e.what(), scene_file, overrides));
       }
     if (!parameters.geometry.particle_file.empty())
       {

@@ -37,6 +37,17 @@ namespace levelsinter
   };
 
   /**
+   * @p message about a value, prefixed with where the value came from: the
+   * --set of the entry the message names in quotes ('Section/entry'; the
+   * last such --set), else the scene file.
+   */
+  std::string
+  with_source(
+    const std::string                                      &message,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
    * Declare all entries in @p prm, read @p scene_file (if not empty) and
    * apply the overrides, without checking the values: the entries as the
    * user gave them. Throws std::runtime_error naming the file or the --set.
