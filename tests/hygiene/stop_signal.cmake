@@ -1,17 +1,17 @@
-# SIGTERM after DELAY seconds stops a long run after the current step:
-# exit code CODE, a final message naming the step, and metrics.csv
-# complete up to that step (every row whole, the last one that step).
-#   cmake -DLEVELSINTER=... -DSCENE=... -DDELAY=s -DCODE=143 -DWORK=dir
-#     [-DLAUNCH="mpirun;..."] -P stop_signal.cmake
+# SIGTERM (sent by SENDER, a command that runs the rest) stops a long
+# run after the current step: exit code 143, a final message naming the
+# step, and metrics.csv complete up to that step (every row whole, the
+# last one that step).
+#   cmake -DSENDER="timeout;--preserve-status;-s;TERM;10"
+#     -DLEVELSINTER=... -DSCENE=... -DWORK=dir -P stop_signal.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-execute_process(COMMAND timeout --preserve-status -s TERM ${DELAY}
-  ${LAUNCH} ${LEVELSINTER} --set "Output/Directory=out"
+execute_process(COMMAND ${SENDER} ${LEVELSINTER} --set "Output/Directory=out"
   --set "Output/Field formats=none" --set "Mesh refinement/Maximum level=7"
   ${SCENE} WORKING_DIRECTORY ${WORK}
   RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-if(NOT code EQUAL CODE)
-  message(FATAL_ERROR "exit code ${code}, expected ${CODE}:\n${out}\n${err}")
+if(NOT code EQUAL 143)
+  message(FATAL_ERROR "exit code ${code}, expected 143:\n${out}\n${err}")
 endif()
 if(NOT out MATCHES "stopped by SIGTERM at step ([0-9]+), t = [^;]+; metrics.csv is complete up to that step")
   message(FATAL_ERROR "no stop message:\n${out}\n${err}")
