@@ -2,56 +2,112 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <levelsinter/io/run_directory.h>
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
+#include <levelsinter/version.h>
 
-#include <filesystem>
-#include <fstream>
+#include <csignal>
+#include <ctime>
+#include <iomanip>
 #include <iostream>
+#include <optional>
+#include <sstream>
 
 namespace
 {
   using namespace levelsinter;
 
-  // Create the output directory and prove it is writable before any
-  // computing, so that a bad path fails at once and leaves nothing behind.
-  void
-  prepare_output_directory(const std::string &directory, const MPI_Comm comm)
+  const std::string version = std::string("levelsinter ") +
+                              LEVELSINTER_VERSION + " (commit " +
+                              LEVELSINTER_COMMIT + ")";
+
+  // An argument as a shell would need it, so that the recorded command
+  // line can be pasted again.
+  std::string
+  quoted(const std::string &argument)
   {
-    std::string error;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::error_code ec;
-        std::filesystem::create_directories(directory, ec);
-        const std::string probe = directory + "/.levelsinter_write_test";
-        std::ofstream     out(probe);
-        if (ec || !out)
-          error = "output directory '" + directory +
-                  "' cannot be created or written (check Output/Directory "
-                  "and its permissions)";
-        out.close();
-        std::filesystem::remove(probe, ec);
-      }
-    error = Utilities::MPI::broadcast(comm, error, 0);
-    if (!error.empty())
-      throw std::runtime_error(error);
+    if (!argument.empty() &&
+        argument.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMN"
+                                   "OPQRSTUVWXYZ0123456789-_./=:,+@%") ==
+          std::string::npos)
+      return argument;
+    std::string result = "'";
+    for (const char c : argument)
+      result += (c == '\'' ? std::string("'\\''") : std::string(1, c));
+    return result + "'";
   }
 
-  template <int dim>
-  void
-  run(const SceneParameters &scene, const MPI_Comm comm)
+  // The comment at the top of parameters.prm: what ran, when and how.
+  std::string
+  run_record(const int argc, char **argv, const MPI_Comm comm)
   {
-    // A failure inside the run is reported after the simulation has been
-    // destroyed normally (its timers communicate in their destructors),
-    // with the time per phase up to the failure.
+    const std::time_t  now = std::time(nullptr);
+    std::ostringstream out;
+    out << "The effective value of every entry of this run (scene file, "
+           "then --set).\n"
+        << "version: " << version << "\n"
+        << "date: " << std::put_time(std::gmtime(&now), "%Y-%m-%d %H:%M:%S UTC")
+        << "\n"
+        << "MPI ranks: " << Utilities::MPI::n_mpi_processes(comm) << "\n"
+        << "command line:";
+    for (int i = 0; i < argc; ++i)
+      out << ' ' << quoted(argv[i]);
+    out << "\n";
+    return out.str();
+  }
+
+  // Returns the exit code: 0, or 128 + the signal that stopped the run.
+  template <int dim>
+  int
+  run(const SceneParameters &scene,
+      const CommandLine     &command_line,
+      const bool             overwrite,
+      const std::string     &record,
+      const std::string     &parameters,
+      const MPI_Comm         comm)
+  {
+    const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+    // A failure is reported after the simulation has been destroyed
+    // normally (its timers communicate in their destructors), with the time
+    // per phase up to the failure if the run had started.
     std::string failure;
+    bool        started     = false;
+    int         stop_signal = 0;
     {
-      Simulation<dim> simulation(scene, comm, std::cout);
-      prepare_output_directory(scene.output.directory, comm);
+      // Everything is checked (the scene, the mechanisms it builds, the
+      // output directory) before the earlier run is removed and anything
+      // is written.
+      std::optional<Simulation<dim>> simulation;
       try
         {
-          const auto summary = simulation.run();
-          if (Utilities::MPI::this_mpi_process(comm) == 0)
+          simulation.emplace(scene, comm, std::cout);
+        }
+      catch (const std::runtime_error &e)
+        {
+          // Building the mechanisms checks their entries, e.g. an
+          // expression.
+          throw std::runtime_error(with_source(e.what(),
+                                               command_line.scene_file,
+                                               command_line.overrides));
+        }
+      try
+        {
+          run_directory::prepare(scene.output.directory, overwrite, comm);
+          run_directory::write_parameters(scene.output.directory,
+                                          record,
+                                          parameters,
+                                          comm);
+          started            = true;
+          const auto summary = simulation->run();
+          stop_signal        = summary.stop_signal;
+          if (root && stop_signal != 0)
+            std::cout << "stopped by "
+                      << (stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
+                      << " at step " << summary.steps
+                      << ", t = " << summary.time << "; metrics.csv is "
+                      << "complete up to that step\n";
+          else if (root)
             std::cout << "done: " << summary.steps << " steps to t = "
                       << summary.time << " in " << summary.wall_time
                       << " s; at most " << summary.max_cells << " cells, "
@@ -62,10 +118,12 @@ namespace
         {
           failure = e.what();
         }
-      simulation.timer().print_wall_time_statistics(comm);
+      if (started)
+        simulation->timer().print_wall_time_statistics(comm);
     }
     if (!failure.empty())
       throw std::runtime_error(failure);
+    return stop_signal == 0 ? 0 : 128 + stop_signal;
   }
 } // namespace
 
@@ -78,27 +136,53 @@ main(int argc, char **argv)
   try
     {
       const CommandLine command_line = CommandLine::parse(argc, argv);
-      if (command_line.action == CommandLine::Action::help)
+      if (command_line.action == CommandLine::Action::help ||
+          command_line.action == CommandLine::Action::version)
         {
           if (root)
-            std::cout << CommandLine::usage();
+            std::cout << (command_line.action == CommandLine::Action::help ?
+                            CommandLine::usage() :
+                            version + "\n");
           return 0;
         }
+
+      dealii::ParameterHandler prm;
       if (command_line.action == CommandLine::Action::print_parameters)
         {
-          dealii::ParameterHandler prm;
-          SceneParameters::declare_parameters(prm);
+          // Without a scene: the defaults, which need not form a scene.
+          if (command_line.scene_file.empty())
+            read_scene_entries(prm, "", command_line.overrides);
+          else
+            read_scene(prm, command_line.scene_file, command_line.overrides);
           if (root)
             prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
           return 0;
         }
 
       const SceneParameters scene =
-        read_scene(command_line.scene_file, command_line.overrides);
-      if (scene.dimension == 2)
-        run<2>(scene, comm);
-      else
-        run<3>(scene, comm);
+        read_scene(prm, command_line.scene_file, command_line.overrides);
+      prm.enter_subsection("Output");
+      const bool overwrite =
+        command_line.overwrite || prm.get_bool("Overwrite");
+      prm.leave_subsection();
+      std::ostringstream parameters;
+      prm.print_parameters(parameters, dealii::ParameterHandler::PRM);
+      const std::string record = run_record(argc, argv, comm);
+
+      stop_on_signals();
+      return scene.dimension == 2 ?
+               run<2>(scene,
+                      command_line,
+                      overwrite,
+                      record,
+                      parameters.str(),
+                      comm) :
+               run<3>(scene,
+                      command_line,
+                      overwrite,
+                      record,
+                      parameters.str(),
+                      comm);
     }
   catch (const std::exception &e)
     {
@@ -106,5 +190,4 @@ main(int argc, char **argv)
         std::cerr << "levelsinter: error: " << e.what() << std::endl;
       return 1;
     }
-  return 0;
 }

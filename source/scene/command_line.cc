@@ -3,6 +3,7 @@
 
 #include <levelsinter/scene/command_line.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -57,16 +58,20 @@ namespace levelsinter
       for (; depth > 0; --depth)
         prm.leave_subsection();
     }
+
   } // namespace
 
   std::string
   CommandLine::usage()
   {
     return "Usage:\n"
-           "  levelsinter [--set \"Section/entry=value\"]... SCENE.prm\n"
+           "  levelsinter [--overwrite] [--set \"Section/entry=value\"]... "
+           "SCENE.prm\n"
            "  mpirun -np N levelsinter SCENE.prm\n"
-           "  levelsinter --print-parameters   every entry with its default "
-           "and documentation\n"
+           "  levelsinter --print-parameters [--set ...]... [SCENE.prm]\n"
+           "                     every entry with its effective value (the "
+           "defaults without a scene)\n"
+           "  levelsinter --version\n"
            "  levelsinter --help\n"
            "\n"
            "SCENE.prm is a deal.II parameter file ('set Entry = value' inside "
@@ -76,7 +81,13 @@ namespace levelsinter
            "  levelsinter --set \"Mesh refinement/Maximum level=7\" "
            "scene.prm\n"
            "Subsections are separated by '/'; a top-level entry has no '/'.\n"
-           "Outputs (fields, metrics.csv) go to Output/Directory.\n";
+           "Outputs (fields, metrics.csv, parameters.prm) go to "
+           "Output/Directory. A directory\n"
+           "that holds an earlier run is refused unless --overwrite (or "
+           "Output/Overwrite = true)\n"
+           "is given; then the earlier run's files are removed first.\n"
+           "SIGINT or SIGTERM stops the run after the current step (exit "
+           "code 130 or 143).\n";
   }
 
   CommandLine
@@ -88,8 +99,12 @@ namespace levelsinter
         const std::string arg = argv[i];
         if (arg == "--help" || arg == "-h")
           cl.action = Action::help;
+        else if (arg == "--version")
+          cl.action = Action::version;
         else if (arg == "--print-parameters")
           cl.action = Action::print_parameters;
+        else if (arg == "--overwrite")
+          cl.overwrite = true;
         else if (arg == "--set")
           {
             if (i + 1 >= argc)
@@ -100,9 +115,13 @@ namespace levelsinter
             if (eq == std::string::npos)
               throw std::runtime_error("--set '" + assignment +
                                        "': expected 'Section/entry=value'");
+            // "A / b = 1" is stored as "A/b", the form error messages use.
+            std::string path;
+            for (const auto &part : Utilities::split_string_list(
+                   assignment.substr(0, eq), '/'))
+              path += (path.empty() ? "" : "/") + part;
             cl.overrides.emplace_back(
-              Utilities::trim(assignment.substr(0, eq)),
-              Utilities::trim(assignment.substr(eq + 1)));
+              path, Utilities::trim(assignment.substr(eq + 1)));
           }
         else if (!arg.empty() && arg[0] == '-')
           throw std::runtime_error("unknown option '" + arg +
@@ -118,23 +137,22 @@ namespace levelsinter
     return cl;
   }
 
-  SceneParameters
-  read_scene(const std::string &scene_file,
-             const std::vector<std::pair<std::string, std::string>> &overrides)
+  void
+  read_scene_entries(
+    ParameterHandler                                       &prm,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides)
   {
-    ParameterHandler prm;
     SceneParameters::declare_parameters(prm);
-
-    std::string scene_directory;
     if (!scene_file.empty())
       {
+        if (std::filesystem::is_directory(scene_file))
+          throw std::runtime_error("scene file '" + scene_file +
+                                   "' is a directory, not a parameter file");
         std::ifstream probe(scene_file);
         if (!probe)
           throw std::runtime_error("scene file '" + scene_file +
                                    "' cannot be opened for reading");
-        const auto slash = scene_file.rfind('/');
-        scene_directory =
-          (slash == std::string::npos) ? "." : scene_file.substr(0, slash);
         try
           {
             prm.parse_input(scene_file);
@@ -147,6 +165,33 @@ namespace levelsinter
       }
     for (const auto &[path, value] : overrides)
       apply_override(prm, path, value);
+  }
+
+  std::string
+  with_source(
+    const std::string                                      &message,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
+      if (message.find("'" + o->first + "'") != std::string::npos)
+        return "--set '" + o->first + "=" + o->second + "': " + message;
+    return (scene_file.empty() ? std::string("scene") :
+                                 "scene file '" + scene_file + "'") +
+           ": " + message;
+  }
+
+  SceneParameters
+  read_scene(ParameterHandler  &prm,
+             const std::string &scene_file,
+             const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    read_scene_entries(prm, scene_file, overrides);
+    const auto  slash = scene_file.rfind('/');
+    std::string scene_directory;
+    if (!scene_file.empty())
+      scene_directory =
+        (slash == std::string::npos) ? "." : scene_file.substr(0, slash);
 
     SceneParameters parameters;
     try
@@ -156,10 +201,25 @@ namespace levelsinter
     catch (const std::runtime_error &e)
       {
         throw std::runtime_error(
-          (scene_file.empty() ? std::string("scene") :
-                                "scene file '" + scene_file + "'") +
-          ": " + e.what());
+          with_source(e.what(), scene_file, overrides));
+      }
+    if (!parameters.geometry.particle_file.empty())
+      {
+        prm.enter_subsection("Geometry");
+        prm.set("Particle file",
+                std::filesystem::absolute(parameters.geometry.particle_file)
+                  .lexically_normal()
+                  .string());
+        prm.leave_subsection();
       }
     return parameters;
+  }
+
+  SceneParameters
+  read_scene(const std::string &scene_file,
+             const std::vector<std::pair<std::string, std::string>> &overrides)
+  {
+    ParameterHandler prm;
+    return read_scene(prm, scene_file, overrides);
   }
 } // namespace levelsinter

@@ -14,6 +14,13 @@ namespace levelsinter
                         "Directory for fields and metrics.csv; created if "
                         "missing. Relative paths are relative to the current "
                         "working directory.");
+      prm.declare_entry("Overwrite",
+                        "false",
+                        Patterns::Bool(),
+                        "Replace an earlier run in Directory (its fields, "
+                        "metrics.csv and parameters.prm are removed first); "
+                        "false refuses such a directory. Read by the "
+                        "levelsinter program, like its --overwrite.");
       prm.declare_entry("Field interval",
                         "10",
                         Patterns::Integer(0),

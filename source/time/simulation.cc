@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <csignal>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -21,6 +22,15 @@ namespace levelsinter
 {
   namespace
   {
+    // The signal that asked the run to stop; see stop_on_signals().
+    volatile std::sig_atomic_t stop_signal = 0;
+
+    extern "C" void
+    record_stop_signal(const int signal)
+    {
+      stop_signal = signal;
+    }
+
     std::string
     format_seconds(const double s)
     {
@@ -34,6 +44,18 @@ namespace levelsinter
       return out.str();
     }
   } // namespace
+
+  void
+  stop_on_signals()
+  {
+    struct sigaction action = {};
+    action.sa_handler       = record_stop_signal;
+    // SA_RESETHAND: a second signal finds the default action and kills.
+    action.sa_flags = SA_RESETHAND;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+  }
 
   template <int dim>
   Simulation<dim>::Simulation(const SceneParameters &scene,
@@ -266,6 +288,8 @@ namespace levelsinter
     const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
+    if (step > 0)
+      remaining_time.add_step(t, dt, wall);
 
     if (step == 0 || final_step || step % scene.output.metrics_interval == 0)
       {
@@ -345,18 +369,20 @@ namespace levelsinter
       {
         // The run ends at the end time or after the step limit, whichever
         // comes first.
-        const double fraction = std::max(
-          t / scene.time.end_time,
-          scene.time.max_steps > 0 ? double(step) / scene.time.max_steps : 0.);
+        const double steps_left =
+          scene.time.max_steps > 0 ? double(scene.time.max_steps) - step :
+                                     std::numeric_limits<double>::max();
         const double eta =
-          fraction > 0 ? wall * (1 - fraction) / fraction : 0.;
+          final_step ? 0. :
+                       remaining_time.estimate(scene.time.end_time, steps_left);
         pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
               << std::setprecision(5) << t << " / " << scene.time.end_time
               << "  dt = " << std::setw(10) << std::setprecision(3) << dt
               << "  cells " << std::setw(8) << cells << "  dofs "
               << std::setw(8) << dofs << "  GMRES " << std::setw(3)
               << last_iterations << "  wall " << format_seconds(wall)
-              << "  ETA " << format_seconds(eta) << std::endl;
+              << "  ETA " << (eta < 0 ? "-" : format_seconds(eta))
+              << std::endl;
       }
   }
 
@@ -425,7 +451,10 @@ namespace levelsinter
           << Utilities::MPI::n_mpi_processes(comm) << " MPI rank(s), "
           << tria.n_global_active_cells() << " cells, "
           << alpha.dof_handler().n_dofs() << " level-set DoFs, h_min = "
-          << h_min << std::endl;
+          << h_min << "; mechanisms: ";
+    for (unsigned int i = 0; i < mechanisms.size(); ++i)
+      pcout << (i > 0 ? ", " : "") << mechanisms[i]->name();
+    pcout << (mechanisms.empty() ? "none" : "") << std::endl;
 
     double       t    = 0;
     unsigned int step = 0;
@@ -452,13 +481,21 @@ namespace levelsinter
         t += dt;
         ++step;
 
-        // 3. Metrics, fields, progress.
-        const bool final_step =
+        // 3. Metrics, fields, progress. A stop signal makes this step the
+        //    last on every rank alike, whichever rank received it.
+        const bool finished =
           !(t < end_time * (1 - 1e-12)) ||
           (scene.time.max_steps > 0 && step >= scene.time.max_steps);
-        record(step, t, dt, final_step);
+        const int signal =
+          finished ? 0 : Utilities::MPI::max(int(stop_signal), comm);
+        record(step, t, dt, finished || signal != 0);
         if (step_observer)
           step_observer(step, t, alpha);
+        if (signal != 0)
+          {
+            summary.stop_signal = signal;
+            break;
+          }
       }
 
     summary.steps = step;

@@ -22,6 +22,10 @@ namespace levelsinter
   public:
     virtual ~Mechanism() = default;
 
+    /** What the start-up line calls it, e.g. "viscous flow". */
+    virtual std::string
+    name() const = 0;
+
     /** The mesh changed (or t = 0): size matrices and vectors. */
     virtual void
     setup(const LevelSetField<dim> &alpha) = 0;

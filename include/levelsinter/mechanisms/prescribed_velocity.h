@@ -29,6 +29,12 @@ namespace levelsinter
     PrescribedVelocity(const SceneParameters::Velocity &parameters,
                        const double                     theta);
 
+    std::string
+    name() const override
+    {
+      return "prescribed velocity";
+    }
+
     void
     setup(const LevelSetField<dim> &) override
     {}

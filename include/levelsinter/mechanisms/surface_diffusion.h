@@ -23,6 +23,12 @@ namespace levelsinter
                      const LevelSetFilter                    &filter,
                      TimerOutput                             &timer);
 
+    std::string
+    name() const override
+    {
+      return "surface diffusion";
+    }
+
     void
     setup(const LevelSetField<dim> &alpha) override;
 

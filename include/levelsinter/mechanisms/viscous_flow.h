@@ -41,6 +41,12 @@ namespace levelsinter
                 const unsigned int                     band_level,
                 TimerOutput                           &timer);
 
+    std::string
+    name() const override
+    {
+      return "viscous flow";
+    }
+
     void
     setup(const LevelSetField<dim> &alpha) override;
 

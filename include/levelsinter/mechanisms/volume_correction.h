@@ -27,6 +27,12 @@ namespace levelsinter
   public:
     explicit VolumeCorrection(const LevelSetFilter &filter);
 
+    std::string
+    name() const override
+    {
+      return "volume correction";
+    }
+
     void
     setup(const LevelSetField<dim> &) override
     {}

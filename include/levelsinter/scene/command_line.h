@@ -18,6 +18,7 @@ namespace levelsinter
     {
       run,
       help,
+      version,
       print_parameters
     };
 
@@ -25,6 +26,8 @@ namespace levelsinter
     std::string scene_file;
     // ("Section/subsection/entry", "value") pairs from --set, in order.
     std::vector<std::pair<std::string, std::string>> overrides;
+    // --overwrite: replace an earlier run in the output directory.
+    bool overwrite = false;
 
     static CommandLine
     parse(int argc, char **argv);
@@ -34,11 +37,45 @@ namespace levelsinter
   };
 
   /**
+   * @p message about a value, prefixed with where the value came from: the
+   * --set of the entry the message names in quotes ('Section/entry'; the
+   * last such --set), else the scene file.
+   */
+  std::string
+  with_source(
+    const std::string                                      &message,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
+   * Declare all entries in @p prm, read @p scene_file (if not empty) and
+   * apply the overrides, without checking the values: the entries as the
+   * user gave them. Throws std::runtime_error naming the file or the --set.
+   */
+  void
+  read_scene_entries(
+    ParameterHandler                                       &prm,
+    const std::string                                      &scene_file,
+    const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
    * Declare all entries, read @p scene_file (if not empty), apply the
    * overrides and check everything. Any problem throws std::runtime_error
    * whose message names the file, the line or entry, and what is allowed.
    */
   SceneParameters
   read_scene(const std::string &scene_file,
+             const std::vector<std::pair<std::string, std::string>> &overrides);
+
+  /**
+   * The same, leaving every entry with its effective value (the file's or
+   * an override's, else the default) in @p prm, which this function
+   * declares: what --print-parameters shows and parameters.prm records. A
+   * relative Geometry/Particle file is made absolute there, so that the
+   * record can be run again from anywhere.
+   */
+  SceneParameters
+  read_scene(ParameterHandler  &prm,
+             const std::string &scene_file,
              const std::vector<std::pair<std::string, std::string>> &overrides);
 } // namespace levelsinter

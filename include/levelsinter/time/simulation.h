@@ -15,6 +15,7 @@
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/level_set/velocity_field.h>
 #include <levelsinter/scene/scene_parameters.h>
+#include <levelsinter/time/remaining_time.h>
 
 #include <chrono>
 #include <functional>
@@ -22,6 +23,16 @@
 
 namespace levelsinter
 {
+  /**
+   * From this call on, SIGINT and SIGTERM make a running Simulation stop
+   * after its current step, as if that were the last (its metrics row and
+   * fields are written), instead of killing the process; the signal is in
+   * Summary::stop_signal. The handler only records the signal; a second
+   * one acts as usual (kills at once). For a program's main.
+   */
+  void
+  stop_on_signals();
+
   /**
    * One scene from t = 0 to the end time. Each step reads like the physics:
    * interface velocity (the sum over the scene's mechanisms) -> transport
@@ -47,6 +58,9 @@ namespace levelsinter
       /** Last time the curvature was under-resolved (-1: never; only for
        *  curvature-driven mechanisms). */
       double curvature_under_resolved_until = -1;
+      /** SIGINT or SIGTERM if one stopped the run early (stop_on_signals()),
+       *  else 0. */
+      int stop_signal = 0;
     };
 
     Simulation(const SceneParameters &scene,
@@ -163,6 +177,7 @@ namespace levelsinter
     unsigned int                              last_iterations  = 0;
     bool                                      initialised      = false;
     std::chrono::steady_clock::time_point     start;
+    RemainingTime                             remaining_time;
     std::function<void(unsigned int, double, const LevelSetField<dim> &)>
       step_observer;
   };

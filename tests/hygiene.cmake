@@ -1,0 +1,89 @@
+# --- Run hygiene: output directory, run record, stop signals, plots -------
+set(HYGIENE ${CMAKE_CURRENT_SOURCE_DIR}/hygiene)
+
+# The tests that run the application into a fixed directory here would be
+# refused by a second ctest ("holds an earlier run"): their directories
+# are cleared first. A new such test belongs in both lists.
+set(APPLICATION_RUNS mpi_run_np1 mpi_run_np2 step_retry
+  viscous_scene_two_cylinders viscous_scene_two_spheres_3d
+  surface_diffusion_relative_time_step surface_diffusion_3d_np1
+  surface_diffusion_3d_np2)
+set(APPLICATION_OUTPUTS mpi_np1 mpi_np2 step_retry viscous_scene
+  viscous_scene_3d relative_time_step sd_3d_np1 sd_3d_np2)
+add_test(NAME clear_application_outputs
+  COMMAND ${CMAKE_COMMAND} -E rm -rf ${APPLICATION_OUTPUTS})
+set_tests_properties(clear_application_outputs PROPERTIES
+  FIXTURES_SETUP application_outputs)
+set_property(TEST ${APPLICATION_RUNS} APPEND PROPERTY
+  FIXTURES_REQUIRED application_outputs)
+
+# An earlier run is refused, untouched (bad_input.cmake leaves a
+# metrics.csv in out/); --overwrite or Output/Overwrite replaces it.
+bad_input_test(earlier_run "holds an earlier run (metrics.csv)"
+  --set "Output/Directory=out" ${SCENE})
+foreach(option overwrite set_overwrite)
+  if(option STREQUAL "overwrite")
+    set(options --overwrite)
+  else()
+    set(options --set "Output/Overwrite=true")
+  endif()
+  add_test(NAME ${option}_earlier_run COMMAND ${CMAKE_COMMAND}
+    -DLEVELSINTER=$<TARGET_FILE:levelsinter> -DSCENE=${SCENE}
+    "-DOPTIONS=${options}" -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${option}_earlier_run
+    -P ${HYGIENE}/overwrite.cmake)
+endforeach()
+
+# parameters.prm: the run's record, runnable again.
+add_test(NAME parameters_record COMMAND ${CMAKE_COMMAND}
+  -DLEVELSINTER=$<TARGET_FILE:levelsinter>
+  -DCOMPARE=$<TARGET_FILE:compare_metrics>
+  -DSCENE=${HYGIENE}/particle_file_2d.prm
+  -DWORK=${CMAKE_CURRENT_BINARY_DIR}/parameters_record
+  -P ${HYGIENE}/parameters_record.cmake)
+
+add_test(NAME version COMMAND levelsinter --version)
+set_tests_properties(version PROPERTIES PASS_REGULAR_EXPRESSION
+  "^levelsinter [^ ]+ \\(commit ([0-9a-f]+|unknown)\\)")
+# A scene's effective values: the file's (Output/Directory) with the
+# --set applied (Maximum level 6; the scene has 5, the default is 4).
+add_test(NAME print_scene_parameters COMMAND levelsinter --print-parameters
+  --set "Mesh refinement/Maximum level=6" ${SCENE})
+set_tests_properties(print_scene_parameters PROPERTIES PASS_REGULAR_EXPRESSION
+  "set Maximum level += 6 +# default: 4.*set Directory += output/circle_translation_2d")
+
+# Messages name the --set that gave the value, and a directory as a scene.
+bad_input_test(set_named "--set 'Mesh refinement/Band width=0.05': entry"
+  --set "Mesh refinement/Band width=0.05"
+  ${CMAKE_SOURCE_DIR}/parameter_files/closed_pore_2d.prm)
+bad_input_test(set_named_mechanism
+  "--set 'Velocity/Expression constants=U': entry"
+  --set "Velocity/Expression constants=U" ${SCENE})
+bad_input_test(scene_is_directory "is a directory, not a parameter file"
+  ${HYGIENE})
+
+# SIGTERM ends a long run (level 7: ~1000 steps) after the current step;
+# 10 s leave time for the start under load. On 2 ranks only one rank gets
+# the signal, and both stop at the same step.
+add_test(NAME stop_signal COMMAND ${CMAKE_COMMAND}
+  "-DSENDER=timeout;--preserve-status;-s;TERM;10"
+  -DLEVELSINTER=$<TARGET_FILE:levelsinter> -DSCENE=${SCENE}
+  -DWORK=${CMAKE_CURRENT_BINARY_DIR}/stop_signal
+  -P ${HYGIENE}/stop_signal.cmake)
+add_test(NAME stop_signal_one_rank_np2 COMMAND ${CMAKE_COMMAND}
+  "-DSENDER=${HYGIENE}/signal_one_rank.sh;15;${MPIRUN};${MPIRUN_FLAGS};-np;2"
+  -DLEVELSINTER=$<TARGET_FILE:levelsinter> -DSCENE=${SCENE}
+  -DWORK=${CMAKE_CURRENT_BINARY_DIR}/stop_signal_one_rank_np2
+  -P ${HYGIENE}/stop_signal.cmake)
+
+# scripts/plot_metrics.py on the metrics of the 1- and 2-rank runs (run
+# as its #! says: Debian's python3 has matplotlib).
+add_test(NAME plot_metrics COMMAND sh -c
+  "rm -f plot_metrics.png && ${CMAKE_SOURCE_DIR}/scripts/plot_metrics.py mpi_np1 mpi_np2 --y solid_volume interface_area cells -o plot_metrics.png && test -s plot_metrics.png")
+set_tests_properties(plot_metrics PROPERTIES
+  FIXTURES_REQUIRED "mpi_np1;mpi_np2")
+
+# The ETA for fixed and growing steps against the exact time left.
+add_executable(remaining_time_test remaining_time_test.cc)
+target_link_libraries(remaining_time_test levelsinter_lib)
+deal_ii_setup_target(remaining_time_test)
+add_test(NAME remaining_time COMMAND remaining_time_test)
