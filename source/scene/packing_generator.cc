@@ -100,10 +100,12 @@ namespace levelsinter
       {
         // Per axis the options: identity, and the periodic shifts or the
         // mirror that land within the cutoff of the container.
-        std::array<std::vector<std::pair<int, double>>, 3> options;
+        // (transform, coordinate); at most identity and two shifts.
+        std::array<std::array<std::pair<int, double>, 3>, 3> options;
+        std::array<unsigned int, 3>                           n_options = {{1, 1, 1}};
         for (unsigned int d = 0; d < box.dim; ++d)
           {
-            options[d].push_back({0, x[d]});
+            options[d][0] = {0, x[d]};
             if (box.periodic)
               {
                 const double period = box.upper[d] - box.lower[d];
@@ -111,11 +113,11 @@ namespace levelsinter
                   {
                     const double y = x[d] + shift * period;
                     if (y >= box.lower[d] - cutoff && y <= box.upper[d] + cutoff)
-                      options[d].push_back({shift, y});
+                      options[d][n_options[d]++] = {shift, y};
                   }
               }
             else if (box.symmetry[d] && std::abs(x[d] - box.plane(d)) <= cutoff)
-              options[d].push_back({2, 2 * box.plane(d) - x[d]});
+              options[d][n_options[d]++] = {2, 2 * box.plane(d) - x[d]};
           }
         std::array<unsigned int, 3> index = {{0, 0, 0}};
         while (true)
@@ -129,7 +131,7 @@ namespace levelsinter
             ghosts.push_back(g);
             unsigned int d = 0;
             for (; d < box.dim; ++d)
-              if (++index[d] < options[d].size())
+              if (++index[d] < n_options[d])
                 break;
               else
                 index[d] = 0;
@@ -164,9 +166,18 @@ namespace levelsinter
               cell_size[d] = extent / n_cells[d];
               n_total *= n_cells[d];
             }
-          cells.assign(n_total, {});
+          // Counting sort: the ghosts of cell c are sorted[start[c]] to
+          // sorted[start[c + 1] - 1].
+          start.assign(n_total + 1, 0);
+          std::vector<unsigned long> cell(ghosts.size());
           for (unsigned int k = 0; k < ghosts.size(); ++k)
-            cells[cell_index(cell_of(ghosts[k].x))].push_back(k);
+            ++start[(cell[k] = cell_index(cell_of(ghosts[k].x))) + 1];
+          for (unsigned long c = 0; c < n_total; ++c)
+            start[c + 1] += start[c];
+          sorted.resize(ghosts.size());
+          std::vector<unsigned int> fill(start.begin(), start.end() - 1);
+          for (unsigned int k = 0; k < ghosts.size(); ++k)
+            sorted[fill[cell[k]]++] = k;
         }
 
         // Calls f(ghost) for every particle or ghost in the cells around p.
@@ -184,8 +195,11 @@ namespace levelsinter
           for (int a = lo[0]; a <= hi[0]; ++a)
             for (int b = lo[1]; b <= hi[1]; ++b)
               for (int e = lo[2]; e <= hi[2]; ++e)
-                for (const unsigned int k : cells[cell_index({{a, b, e}})])
-                  f(ghosts[k]);
+                {
+                  const unsigned long c = cell_index({{a, b, e}});
+                  for (unsigned int k = start[c]; k < start[c + 1]; ++k)
+                    f(ghosts[sorted[k]]);
+                }
         }
 
         std::vector<Ghost> ghosts;
@@ -215,7 +229,7 @@ namespace levelsinter
         Point                                origin    = {{0, 0, 0}};
         Point                                cell_size = {{1, 1, 1}};
         std::array<int, 3>                   n_cells   = {{1, 1, 1}};
-        std::vector<std::vector<unsigned int>> cells;
+        std::vector<unsigned int>            start, sorted;
       };
 
       double
