@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <random>
 #include <sstream>
 #include <stdexcept>
@@ -951,100 +952,81 @@ namespace levelsinter
     parse_arguments(const std::vector<std::string> &arguments,
                     std::string                     &output_file)
     {
-      Settings                           s;
-      std::string                        region, domain, symmetry;
-      std::string                        distribution = "constant";
-      double                             radius = 0;
-      bool                               dense  = false;
-      std::vector<std::string>           seen;
-      const std::vector<std::string>     flags = {"--periodic", "--dense"};
-      const std::vector<std::string>     valued = {
-        "--dim",        "--particles",       "--radius",
-        "--radius-distribution", "--radius-min", "--radius-max",
-        "--radius-mean", "--radius-std",     "--region",
-        "--domain",     "--fraction",        "--symmetry",
-        "--neck",       "--contact-gap",     "--interior-margin",
-        "--contraction", "--max-iterations", "--seed",
-        "--output"};
-      const auto integer = [](const std::string &name, const std::string &v) {
-        const double d = parse_number(name, v);
-        if (d < 0 || d != std::floor(d) || d > 4e9)
-          throw std::runtime_error(name + ": expected a non-negative "
-                                          "integer, found '" + v + "'");
-        return static_cast<unsigned long>(d);
-      };
+      Settings      s;
+      std::string   region, domain, symmetry;
+      std::string   distribution = "constant";
+      double        radius       = 0;
+      unsigned long dim = s.dim, n_particles = 0, max_iterations = s.max_iterations;
+      bool          dense = false;
+      std::vector<std::string> seen;
+      const std::map<std::string, bool *> flags = {{"--periodic", &s.periodic},
+                                                   {"--dense", &dense}};
+      const std::map<std::string, double *> numbers = {
+        {"--radius", &radius},
+        {"--radius-min", &s.r_min},
+        {"--radius-max", &s.r_max},
+        {"--radius-mean", &s.r_mean},
+        {"--radius-std", &s.r_std},
+        {"--fraction", &s.target_fraction},
+        {"--neck", &s.neck_ratio},
+        {"--contact-gap", &s.contact_gap},
+        {"--interior-margin", &s.interior_margin},
+        {"--contraction", &s.contraction}};
+      const std::map<std::string, unsigned long *> integers = {
+        {"--dim", &dim},
+        {"--particles", &n_particles},
+        {"--max-iterations", &max_iterations},
+        {"--seed", &s.seed}};
+      const std::map<std::string, std::string *> texts = {
+        {"--radius-distribution", &distribution},
+        {"--region", &region},
+        {"--domain", &domain},
+        {"--symmetry", &symmetry},
+        {"--output", &output_file}};
       for (unsigned int k = 0; k < arguments.size(); ++k)
         {
           const std::string &name = arguments[k];
-          const bool is_flag = std::find(flags.begin(), flags.end(), name) !=
-                               flags.end();
-          if (!is_flag &&
-              std::find(valued.begin(), valued.end(), name) == valued.end())
-            throw std::runtime_error("unknown option '" + name +
-                                     "' (see levelsinter-pack --help)");
           if (std::find(seen.begin(), seen.end(), name) != seen.end())
             throw std::runtime_error(name + " given twice");
           seen.push_back(name);
-          if (name == "--periodic")
-            s.periodic = true;
-          if (name == "--dense")
-            dense = true;
-          if (is_flag)
-            continue;
+          if (flags.count(name))
+            {
+              *flags.at(name) = true;
+              continue;
+            }
+          if (!numbers.count(name) && !integers.count(name) &&
+              !texts.count(name))
+            throw std::runtime_error("unknown option '" + name +
+                                     "' (see levelsinter-pack --help)");
           if (k + 1 >= arguments.size())
             throw std::runtime_error(name + " needs a value");
           const std::string &v = arguments[++k];
-          if (name == "--dim")
-            s.dim = integer(name, v);
-          else if (name == "--particles")
-            s.n_particles = integer(name, v);
-          else if (name == "--radius")
-            radius = parse_number(name, v);
-          else if (name == "--radius-distribution")
-            distribution = v;
-          else if (name == "--radius-min")
-            s.r_min = parse_number(name, v);
-          else if (name == "--radius-max")
-            s.r_max = parse_number(name, v);
-          else if (name == "--radius-mean")
-            s.r_mean = parse_number(name, v);
-          else if (name == "--radius-std")
-            s.r_std = parse_number(name, v);
-          else if (name == "--region")
-            region = v;
-          else if (name == "--domain")
-            domain = v;
-          else if (name == "--fraction")
+          if (numbers.count(name))
+            *numbers.at(name) = parse_number(name, v);
+          else if (texts.count(name))
+            *texts.at(name) = v;
+          else
             {
-              s.target_fraction = parse_number(name, v);
-              if (!(s.target_fraction > 0))
-                throw std::runtime_error("--fraction: expected a value in "
-                                         "(0, 1), found " + v);
+              const double d = parse_number(name, v);
+              if (d < 0 || d != std::floor(d) || d > 4e9)
+                throw std::runtime_error(name + ": expected a non-negative "
+                                                "integer, found '" + v + "'");
+              *integers.at(name) = static_cast<unsigned long>(d);
             }
-          else if (name == "--symmetry")
-            symmetry = v;
-          else if (name == "--neck")
-            s.neck_ratio = parse_number(name, v);
-          else if (name == "--contact-gap")
-            s.contact_gap = parse_number(name, v);
-          else if (name == "--interior-margin")
-            s.interior_margin = parse_number(name, v);
-          else if (name == "--contraction")
-            s.contraction = parse_number(name, v);
-          else if (name == "--max-iterations")
-            s.max_iterations = integer(name, v);
-          else if (name == "--seed")
-            s.seed = integer(name, v);
-          else if (name == "--output")
-            output_file = v;
         }
+      s.dim            = dim;
+      s.n_particles    = n_particles;
+      s.max_iterations = max_iterations;
+      const auto given = [&](const std::string &name) {
+        return std::find(seen.begin(), seen.end(), name) != seen.end();
+      };
+      if (given("--fraction") && !(s.target_fraction > 0))
+        throw std::runtime_error("--fraction: expected a value in (0, 1), "
+                                 "found " + to_string(s.target_fraction));
       if (output_file.empty())
         throw std::runtime_error("--output: no output file given");
       if (dense && s.target_fraction > 0)
         throw std::runtime_error("--dense and --fraction exclude each other");
-      const auto given = [&](const std::string &name) {
-        return std::find(seen.begin(), seen.end(), name) != seen.end();
-      };
       if (distribution == "constant")
         {
           if (given("--radius-min") || given("--radius-max") ||
