@@ -265,12 +265,15 @@ namespace levelsinter
             return r;
           }
         std::uniform_real_distribution<double> uniform(s.r_min, s.r_max);
-        std::normal_distribution<double>       normal(s.r_mean, s.r_std);
-        // Mean and standard deviation of the radius, not of its logarithm.
-        const double sigma2 = std::log1p(s.r_std * s.r_std / (s.r_mean * s.r_mean));
-        std::lognormal_distribution<double> log_normal(std::log(s.r_mean) -
-                                                         0.5 * sigma2,
-                                                       std::sqrt(sigma2));
+        std::normal_distribution<double> normal(s.r_mean,
+                                                s.r_std > 0 ? s.r_std : 1.);
+        // Mean and standard deviation of the radius, not of its logarithm
+        // (both positive here: Settings::check).
+        const bool   ln = s.distribution == RadiusDistribution::log_normal;
+        const double sigma2 =
+          ln ? std::log1p(s.r_std * s.r_std / (s.r_mean * s.r_mean)) : 1.;
+        std::lognormal_distribution<double> log_normal(
+          ln ? std::log(s.r_mean) - 0.5 * sigma2 : 0., std::sqrt(sigma2));
         for (double &v : r)
           for (unsigned int attempt = 0;; ++attempt)
             {
