@@ -87,7 +87,7 @@ set_tests_properties(packing_file_header PROPERTIES DEPENDS packing_seed_a
 # force-biased algorithm reaches 0.64-0.65 at slow contraction (Bezrukov
 # et al. 2002). Measured at tau = 1000: 0.6383, 0.6402, 0.6387; bounds
 # [0.63, 0.65] hold the literature spread and fail a loose (tau = 100:
-# 0.604) or crystallising packing (above 0.65). Mean coordination with
+# 0.613) or crystallising packing (above 0.65). Mean coordination with
 # gap 1e-3: measured 5.70, 5.62, 5.59; the isostatic 6 counts non-rattlers
 # only, and 2-5 % rattlers with few contacts bring the mean over all
 # particles to 5.7-5.9 (O'Hern et al. 2003); a packing stopped before
