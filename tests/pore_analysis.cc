@@ -31,6 +31,7 @@
 
 #include "study_table.h"
 
+#include <chrono>
 #include <iostream>
 
 using namespace levelsinter;
@@ -184,7 +185,7 @@ namespace
   // A simple cubic lattice.
 
   // Volume of the pore at the centre of a lattice cell (the 2^dim balls at
-  // its corners, throats closed): the pore is star-shaped about the centre,
+  // its corners, throats closed: R > a/2 in 2D, R > a/sqrt2 in 3D): the pore is star-shaped about the centre,
   // V = (1/dim) int |x(omega)|^dim d omega over the directions, x(omega) the
   // first ball surface along the ray; Gauss-Legendre in cos(theta) and the
   // midpoint rule in the angle, 2 x 10^5 rays (converged to 1e-6).
@@ -241,7 +242,7 @@ namespace
 
   // Solid fraction of the lattice: per ball its volume minus 2 dim caps of
   // height R - a/2 (valid while only nearest neighbours overlap,
-  // R < a / sqrt2); past that (3D) the cell minus its closed central pore.
+  // R < a / sqrt2); past that the cell minus its closed central pore.
   template <int dim>
   double
   lattice_density(const double a, const double R)
@@ -277,7 +278,9 @@ namespace
         scene.geometry.particles.push_back(row);
       }
     const UnionOfBalls<dim> balls(scene.geometry.particles);
-    const double exact_pore    = R > a / std::sqrt(2.) ?
+    // The throats close when the balls cover the cell faces' centres.
+    const double closing       = dim == 2 ? a / 2 : a / std::sqrt(2.);
+    const double exact_pore    = R > closing ?
                                    central_pore_volume<dim>(a, R) :
                                    std::numeric_limits<double>::quiet_NaN();
     const double exact_density = lattice_density<dim>(a, R);
@@ -289,7 +292,8 @@ namespace
     Table table({"level", "h", "closed_pores", "open_pores",
                  "pore_volume_error", "relative_density", "density_error",
                  "neck_error", "contacts", "coordination_number",
-                 "interior_coordination_number"},
+                 "interior_coordination_number", "cells",
+                 "analysis_seconds"},
                 options.csv);
     for (const unsigned int level : study::parse_levels(args.at(6)))
       {
@@ -297,7 +301,12 @@ namespace
         LevelSetField<dim>                        level_set(tria);
         build(tria, level_set, balls, level);
         PackingAnalysis<dim> analysis(scene, MPI_COMM_WORLD);
+        const auto           start = std::chrono::steady_clock::now();
         const auto           row   = analysis.measure(0, 0, level_set);
+        const double         seconds = Utilities::MPI::max(
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+            .count(),
+          MPI_COMM_WORLD);
         const auto           names = analysis.column_names();
         auto value = [&](const std::string &name) {
           const auto it = std::find(names.begin(), names.end(), name);
@@ -326,7 +335,8 @@ namespace
                    std::abs(value("relative_density") - exact_density) /
                      exact_density,
                    neck_error, value("contacts"), value("coordination_number"),
-                   value("interior_coordination_number")});
+                   value("interior_coordination_number"),
+                   double(tria.n_global_active_cells()), seconds});
       }
     check_count("closed pores", table.finest("closed_pores"), options,
                 "closed-pores");
