@@ -2,6 +2,7 @@
 
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/packing_analysis.h>
+#include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <cmath>
@@ -13,16 +14,6 @@ namespace levelsinter
 {
   namespace
   {
-    template <int dim>
-    Point<dim>
-    centre_of(const std::vector<double> &particle)
-    {
-      Point<dim> c;
-      for (unsigned int d = 0; d < dim; ++d)
-        c[d] = particle[d];
-      return c;
-    }
-
     // Root-mean-square distance of the points from their mean along axis d.
     template <int dim>
     double
@@ -46,9 +37,8 @@ namespace levelsinter
     , symmetry_boundaries(scene.viscous_flow.symmetry_boundaries)
     , comm(comm)
   {
-    std::vector<Point<dim>> centres;
-    for (const auto &p : particles)
-      centres.push_back(centre_of<dim>(p));
+    if (!particles.empty())
+      centres = UnionOfBalls<dim>(particles).centres();
     Point<dim> lower, upper;
     const auto &analysis = scene.analysis;
     if (!analysis.control_lower_corner.empty())
@@ -164,7 +154,7 @@ namespace levelsinter
       double       power   = std::numeric_limits<double>::max();
       for (unsigned int i = 0; i < n; ++i)
         if (const double p =
-              cell->center().distance_square(centre_of<dim>(particles[i])) -
+              cell->center().distance_square(centres[i]) -
               particles[i][dim] * particles[i][dim];
             p < power)
           {
@@ -185,7 +175,7 @@ namespace levelsinter
       {
         const Tensor<1, dim> m = Utilities::MPI::sum(moment[i], comm);
         result.centroids.push_back(
-          volume[i] > 0 ? Point<dim>(m / volume[i]) : centre_of<dim>(particles[i]));
+          volume[i] > 0 ? Point<dim>(m / volume[i]) : centres[i]);
       }
     return result;
   }

@@ -57,6 +57,7 @@ namespace levelsinter
     measure_solid(const LevelSetField<dim> &level_set) const;
 
     std::vector<std::vector<double>>    particles;
+    std::vector<Point<dim>>             centres;
     std::vector<types::boundary_id>     symmetry_boundaries;
     BoundingBox<dim>                    window;
     std::vector<bool>                   interior; // centre inside the window
