@@ -23,7 +23,6 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/pores.h>
 #include <levelsinter/analysis/reference_shapes.h>
@@ -313,20 +312,16 @@ namespace
           return it == names.end() ? std::numeric_limits<double>::quiet_NaN() :
                                      row[it - names.begin()];
         };
-        const auto pores =
-          find_pores(level_set, {}, analysis.control_volume());
         unsigned int n_open = 0;
         double       pore_error = 0;
-        for (const auto &pore : pores)
+        for (const auto &pore : analysis.pores())
           if (pore.open)
             ++n_open;
           else
             pore_error = std::max(pore_error,
                                   std::abs(pore.volume - exact_pore) / exact_pore);
-        const auto necks = neck_measures::pair_necks(level_set,
-                                                     scene.geometry.particles);
         double neck_error = 0;
-        for (const auto &neck : necks)
+        for (const auto &neck : analysis.necks())
           neck_error = std::max(neck_error,
                                 std::abs(neck.radius - exact_neck) / exact_neck);
         table.add({double(level), std::ldexp(1., -int(level)),

@@ -192,8 +192,8 @@ namespace levelsinter
     const double relative_density =
       solid.window_volume > 0 ? solid.window_solid / solid.window_volume : nan;
 
-    const std::vector<Pore<dim>> pores =
-      find_pores(level_set, symmetry_boundaries, window);
+    last_pores = find_pores(level_set, symmetry_boundaries, window);
+    const std::vector<Pore<dim>> &pores = last_pores;
     std::vector<typename PoreTracker<dim>::Event> events;
     const std::vector<unsigned int> ids = tracker.update(pores, events);
     double closed_in_window = 0, closed_volume = 0;
@@ -208,7 +208,8 @@ namespace levelsinter
     const double closed_porosity =
       solid.window_volume > 0 ? closed_in_window / solid.window_volume : nan;
 
-    const auto   necks = neck_measures::pair_necks(level_set, particles);
+    last_necks        = neck_measures::pair_necks(level_set, particles);
+    const auto &necks = last_necks;
     double       neck_min = nan, neck_max = nan, neck_sum = 0;
     unsigned int contacts = 0;
     std::vector<unsigned int> coordination(particles.size(), 0);

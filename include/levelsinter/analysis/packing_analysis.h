@@ -2,6 +2,7 @@
 
 #include <deal.II/base/bounding_box.h>
 
+#include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/pores.h>
 #include <levelsinter/io/metrics_log.h>
 #include <levelsinter/level_set/level_set_field.h>
@@ -43,6 +44,19 @@ namespace levelsinter
       return window;
     }
 
+    /** The pores and the pair necks of the last measure(). */
+    const std::vector<Pore<dim>> &
+    pores() const
+    {
+      return last_pores;
+    }
+
+    const std::vector<neck_measures::PairNeck> &
+    necks() const
+    {
+      return last_necks;
+    }
+
   private:
     // Solid volume in the window's cells and the solid's centroid in each
     // particle's power cell (the points nearer to it than to any other in
@@ -69,5 +83,7 @@ namespace levelsinter
     std::unique_ptr<MetricsLog>         necks_log;
     std::unique_ptr<MetricsLog>         pores_log;
     std::ofstream                       events_log;
+    std::vector<Pore<dim>>              last_pores;
+    std::vector<neck_measures::PairNeck> last_necks;
   };
 } // namespace levelsinter
