@@ -186,7 +186,8 @@ namespace levelsinter
     // 3. Volume, centroid and area per component; open components.
     std::map<double, Sums<dim>> sums;
     const auto                 &fe = level_set.fe();
-    // Call after read_cell().
+    // Call after read_cell(). A cell without a positive vertex has no
+    // atmosphere (alpha_h <= 0 throughout): none.
     auto owner = [&](const Point<dim> &unit) {
       unsigned int best   = 0;
       double       weight = -1;
@@ -198,7 +199,7 @@ namespace levelsinter
               weight = w;
               best   = v;
             }
-      return label[sets.find(local[best])];
+      return weight < 0 ? none : label[sets.find(local[best])];
     };
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.atmosphere_flags = update_JxW_values | update_quadrature_points;
@@ -208,7 +209,10 @@ namespace levelsinter
       read_cell(cell);
       for (const unsigned int q : values.quadrature_point_indices())
         {
-          auto &s = sums[owner(values.get_quadrature().point(q))];
+          const double l = owner(values.get_quadrature().point(q));
+          if (l == none)
+            continue;
+          auto &s = sums[l];
           s.volume += values.JxW(q);
           s.first_moment += values.JxW(q) * values.quadrature_point(q);
           if (in_window)
@@ -218,8 +222,9 @@ namespace levelsinter
     integrands.on_surface = [&](const auto &cell, const auto &values) {
       read_cell(cell);
       for (const unsigned int q : values.quadrature_point_indices())
-        sums[owner(values.get_quadrature().point(q))].area +=
-          values.JxW(q);
+        if (const double l = owner(values.get_quadrature().point(q));
+            l != none)
+          sums[l].area += values.JxW(q);
     };
     interface_measures::integrate_regions(level_set, integrands);
     for (const auto &cell : dofs.active_cell_iterators())
@@ -259,11 +264,15 @@ namespace levelsinter
           pores.push_back(pore);
         }
     // An order independent of the partition: centroids compared after
-    // rounding far below the cell size (sums differ in the last digits).
-    auto key = [](const Pore<dim> &p) {
+    // rounding to 1e-9 of the window's size, far below the cell size (the
+    // sums differ in the last digits).
+    const double scale = window.get_boundary_points().first.distance(
+                           window.get_boundary_points().second) *
+                         1e-9;
+    auto key = [scale](const Pore<dim> &p) {
       std::array<long long, dim> k;
       for (unsigned int d = 0; d < dim; ++d)
-        k[d] = std::llround(p.centroid[d] * 1e9);
+        k[d] = std::llround(p.centroid[d] / scale);
       return k;
     };
     std::sort(pores.begin(), pores.end(), [&](const auto &a, const auto &b) {
