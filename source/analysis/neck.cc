@@ -111,11 +111,11 @@ namespace levelsinter::neck_measures
     return neck;
   }
   template <int dim>
-  double
-  smallest_neck_radius(const LevelSetField<dim>               &level_set,
-                       const std::vector<std::vector<double>> &particles)
+  std::vector<PairNeck>
+  pair_necks(const LevelSetField<dim>               &level_set,
+             const std::vector<std::vector<double>> &particles)
   {
-    double neck = std::numeric_limits<double>::quiet_NaN();
+    std::vector<PairNeck> necks;
     for (unsigned int i = 0; i < particles.size(); ++i)
       for (unsigned int j = i + 1; j < particles.size(); ++j)
         {
@@ -130,11 +130,23 @@ namespace levelsinter::neck_measures
             // Equal particles neck on the mid-plane (by symmetry, and
             // exactly on symmetric meshes); unequal ones on their narrowest
             // cross-section, which a search finds.
-            neck = std::fmin(neck,
+            necks.push_back({i,
+                             j,
                              particles[i][dim] == particles[j][dim] ?
                                neck_radius(level_set, c1, c2) :
-                               narrowest_neck(level_set, c1, c2).radius);
+                               narrowest_neck(level_set, c1, c2).radius});
         }
+    return necks;
+  }
+
+  template <int dim>
+  double
+  smallest_neck_radius(const LevelSetField<dim>               &level_set,
+                       const std::vector<std::vector<double>> &particles)
+  {
+    double neck = std::numeric_limits<double>::quiet_NaN();
+    for (const PairNeck &pair : pair_necks(level_set, particles))
+      neck = std::fmin(neck, pair.radius);
     return neck;
   }
 
@@ -142,6 +154,10 @@ namespace levelsinter::neck_measures
   neck_radius(const LevelSetField<2> &, const Point<2> &, const Point<2> &);
   template double
   neck_radius(const LevelSetField<3> &, const Point<3> &, const Point<3> &);
+  template std::vector<PairNeck>
+  pair_necks(const LevelSetField<2> &, const std::vector<std::vector<double>> &);
+  template std::vector<PairNeck>
+  pair_necks(const LevelSetField<3> &, const std::vector<std::vector<double>> &);
   template double
   smallest_neck_radius(const LevelSetField<2> &,
                        const std::vector<std::vector<double>> &);

@@ -31,35 +31,16 @@ namespace levelsinter::interface_measures
                   const VolumeIntegrand    &on_volume,
                   const SurfaceIntegrand   &on_surface)
     {
-      const auto &dofs = level_set.dof_handler();
-      NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
-      classifier.reclassify();
-
-      NonMatching::RegionUpdateFlags flags;
-      flags.inside  = volume_flags;
-      flags.surface = surface_flags;
-      const hp::FECollection<dim> fe_collection(level_set.fe());
-      // Three Gauss points per direction integrate the Q1 level set's
-      // implicit surface to far below its interpolation error.
-      NonMatching::FEValues<dim> cut_values(fe_collection,
-                                            QGauss<1>(3),
-                                            flags,
-                                            classifier,
-                                            dofs,
-                                            level_set.alpha());
-      for (const auto &cell : dofs.active_cell_iterators())
-        if (cell->is_locally_owned() &&
-            classifier.location_to_level_set(cell) !=
-              NonMatching::LocationToLevelSet::outside)
-          {
-            cut_values.reinit(cell);
-            if (volume_flags != update_default)
-              if (const auto &inside = cut_values.get_inside_fe_values())
-                on_volume(*inside);
-            if (surface_flags != update_default)
-              if (const auto &surface = cut_values.get_surface_fe_values())
-                on_surface(*surface);
-          }
+      RegionIntegrands<dim> integrands;
+      integrands.solid_flags   = volume_flags;
+      integrands.surface_flags = surface_flags;
+      integrands.on_solid      = [&](const auto &, const auto &values) {
+        on_volume(values);
+      };
+      integrands.on_surface = [&](const auto &, const auto &values) {
+        on_surface(values);
+      };
+      integrate_regions(level_set, integrands);
     }
 
     // alpha_h at a point inside a given cell.
@@ -79,6 +60,56 @@ namespace levelsinter::interface_measures
       return value;
     }
   } // namespace
+
+  template <int dim>
+  void
+  integrate_regions(const LevelSetField<dim>     &level_set,
+                    const RegionIntegrands<dim> &integrands)
+  {
+    const auto &dofs = level_set.dof_handler();
+    NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
+    classifier.reclassify();
+
+    NonMatching::RegionUpdateFlags flags;
+    flags.inside  = integrands.solid_flags;
+    flags.outside = integrands.atmosphere_flags;
+    flags.surface = integrands.surface_flags;
+    const hp::FECollection<dim> fe_collection(level_set.fe());
+    // Three Gauss points per direction integrate the Q1 level set's
+    // implicit surface to far below its interpolation error.
+    NonMatching::FEValues<dim> cut_values(fe_collection,
+                                          QGauss<1>(3),
+                                          flags,
+                                          classifier,
+                                          dofs,
+                                          level_set.alpha());
+    const bool solid      = integrands.solid_flags != update_default;
+    const bool atmosphere = integrands.atmosphere_flags != update_default;
+    const bool surface    = integrands.surface_flags != update_default;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto location = classifier.location_to_level_set(cell);
+          const bool wanted =
+            location == NonMatching::LocationToLevelSet::intersected ?
+              solid || atmosphere || surface :
+              (location == NonMatching::LocationToLevelSet::inside ?
+                 solid :
+                 atmosphere);
+          if (!wanted)
+            continue;
+          cut_values.reinit(cell);
+          if (solid)
+            if (const auto &inside = cut_values.get_inside_fe_values())
+              integrands.on_solid(cell, *inside);
+          if (atmosphere)
+            if (const auto &outside = cut_values.get_outside_fe_values())
+              integrands.on_atmosphere(cell, *outside);
+          if (surface)
+            if (const auto &values = cut_values.get_surface_fe_values())
+              integrands.on_surface(cell, *values);
+        }
+  }
 
   template <int dim>
   VolumeAndArea
@@ -318,6 +349,10 @@ namespace levelsinter::interface_measures
     return result;
   }
 
+  template void
+  integrate_regions(const LevelSetField<2> &, const RegionIntegrands<2> &);
+  template void
+  integrate_regions(const LevelSetField<3> &, const RegionIntegrands<3> &);
   template VolumeAndArea
   volume_and_area(const LevelSetField<2> &);
   template VolumeAndArea

@@ -65,6 +65,7 @@ namespace levelsinter
     SurfaceDiffusionParameters::declare(prm);
     VolumeCorrectionParameters::declare(prm);
     OutputParameters::declare(prm);
+    AnalysisParameters::declare(prm);
     declare_renamed_entries(prm, renamed_entries);
   }
 
@@ -143,6 +144,7 @@ namespace levelsinter
         surface_diffusion.parse(prm);
         volume_correction.parse(prm);
         output.parse(prm);
+        analysis.parse(prm, dimension);
         check_across_sections();
       }
     catch (const std::runtime_error &e)

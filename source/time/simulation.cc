@@ -6,6 +6,7 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <levelsinter/analysis/neck.h>
+#include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
@@ -327,6 +328,16 @@ namespace levelsinter
         for (const auto &mechanism : mechanisms)
           for (const double value : mechanism->metric_values())
             row.push_back(value);
+        // Pores, density, all necks, coordination, shrinkage (doc/user_guide.md).
+        if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
+          {
+            TimerOutput::Scope scope(timer_output, "packing analysis");
+            if (!packing_analysis)
+              packing_analysis =
+                std::make_unique<PackingAnalysis<dim>>(scene, comm);
+            for (const double value : packing_analysis->measure(step, t, alpha))
+              row.push_back(value);
+          }
         if (!metrics)
           {
             std::vector<std::string> columns = {"step",
@@ -346,6 +357,9 @@ namespace levelsinter
               columns.push_back("neck_radius");
             for (const auto &mechanism : mechanisms)
               for (const auto &name : mechanism->metric_names())
+                columns.push_back(name);
+            if (packing_analysis)
+              for (const auto &name : packing_analysis->column_names())
                 columns.push_back(name);
             metrics = std::make_unique<MetricsLog>(scene.output.directory +
                                                      "/metrics.csv",

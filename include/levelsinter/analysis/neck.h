@@ -26,10 +26,27 @@ namespace levelsinter
                 const Point<dim>         &c1,
                 const Point<dim>         &c2);
 
+    /** The neck between particles i and j (indices into the particle list). */
+    struct PairNeck
+    {
+      unsigned int i      = 0;
+      unsigned int j      = 0;
+      double       radius = 0;
+    };
+
     /**
-     * The smallest neck over the pairs of particles (x, y[, z], r) that
-     * overlap, or of the pair if there are exactly two (neck_radius() for
-     * equal radii, narrowest_neck() otherwise); NaN without such a pair.
+     * The necks of all pairs of particles (x, y[, z], r) that overlap, or of
+     * the pair if there are exactly two: neck_radius() for equal radii,
+     * narrowest_neck() otherwise. A pair whose neck has pinched off (the
+     * point between the centres lies in the pore) has radius 0.
+     */
+    template <int dim>
+    std::vector<PairNeck>
+    pair_necks(const LevelSetField<dim>               &level_set,
+               const std::vector<std::vector<double>> &particles);
+
+    /**
+     * The smallest of the pair_necks(); NaN without a pair.
      */
     template <int dim>
     double

@@ -4,6 +4,12 @@
 #include <deal.II/base/function.h>
 #include <deal.II/base/point.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/non_matching/fe_immersed_values.h>
+
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
@@ -20,6 +26,33 @@ namespace levelsinter
    */
   namespace interface_measures
   {
+    /**
+     * What to integrate on each locally owned cell: quadrature of the
+     * solid part {alpha_h < 0}, the atmosphere part {alpha_h > 0} and the
+     * interface in the cell (empty functions and update_default flags skip
+     * a region). Whole cells get the cell's Gauss rule.
+     */
+    template <int dim>
+    struct RegionIntegrands
+    {
+      using Cell = typename DoFHandler<dim>::active_cell_iterator;
+
+      UpdateFlags solid_flags      = update_default;
+      UpdateFlags atmosphere_flags = update_default;
+      UpdateFlags surface_flags    = update_default;
+      std::function<void(const Cell &, const FEValues<dim> &)> on_solid;
+      std::function<void(const Cell &, const FEValues<dim> &)> on_atmosphere;
+      std::function<void(const Cell &,
+                         const NonMatching::FEImmersedSurfaceValues<dim> &)>
+        on_surface;
+    };
+
+    /** Visit the locally owned cells with sharp cut-cell quadrature. */
+    template <int dim>
+    void
+    integrate_regions(const LevelSetField<dim>     &level_set,
+                      const RegionIntegrands<dim> &integrands);
+
     struct VolumeAndArea
     {
       double solid_volume   = 0; // area in 2D

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <levelsinter/scene/analysis_parameters.h>
 #include <levelsinter/scene/domain_parameters.h>
 #include <levelsinter/scene/geometry_parameters.h>
 #include <levelsinter/scene/level_set_parameters.h>
@@ -78,6 +79,7 @@ namespace levelsinter
     SurfaceDiffusionParameters   surface_diffusion;
     VolumeCorrectionParameters   volume_correction;
     OutputParameters             output;
+    AnalysisParameters           analysis;
 
     /** Warnings for the user (deprecated entries, legitimate but unusual
      * choices); the driver prints them before the run. */

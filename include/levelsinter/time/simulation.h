@@ -5,6 +5,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
@@ -165,6 +166,8 @@ namespace levelsinter
     InterfaceBandRefinement<dim>              band_refinement;
     ConvectiveReinitialization<dim>           transport;
     std::unique_ptr<MetricsLog>               metrics;
+    // Made at the first metrics row if the scene asks for it.
+    std::unique_ptr<PackingAnalysis<dim>>     packing_analysis;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;

@@ -1,0 +1,286 @@
+#include <deal.II/base/mpi.h>
+
+#include <levelsinter/analysis/neck.h>
+#include <levelsinter/analysis/packing_analysis.h>
+#include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/level_set/interface_measures.h>
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    // Root-mean-square distance of the points from their mean along axis d.
+    template <int dim>
+    double
+    spread(const std::vector<Point<dim>> &points, const unsigned int d)
+    {
+      double mean = 0, square = 0;
+      for (const auto &p : points)
+        mean += p[d] / points.size();
+      for (const auto &p : points)
+        square += (p[d] - mean) * (p[d] - mean) / points.size();
+      return std::sqrt(square);
+    }
+  } // namespace
+
+  template <int dim>
+  PackingAnalysis<dim>::PackingAnalysis(const SceneParameters &scene,
+                                        const MPI_Comm         comm)
+    : particles(scene.geometry.shape == GeometryParameters::Shape::particles ?
+                  scene.geometry.particles :
+                  std::vector<std::vector<double>>())
+    , symmetry_boundaries(scene.domain.symmetry_planes)
+    , comm(comm)
+  {
+    if (!particles.empty())
+      centres = UnionOfBalls<dim>(particles).centres();
+    Point<dim> lower, upper;
+    const auto &analysis = scene.analysis;
+    if (!analysis.control_lower_corner.empty())
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = analysis.control_lower_corner[d];
+          upper[d] = analysis.control_upper_corner[d];
+        }
+    else
+      {
+        // The centres' bounding box: for a lattice exactly a whole number
+        // of unit cells, away from the free faces.
+        bool has_volume = centres.size() >= 2;
+        if (has_volume)
+          {
+            const BoundingBox<dim> box(centres);
+            lower      = box.get_boundary_points().first;
+            upper      = box.get_boundary_points().second;
+            has_volume = box.volume() > 0;
+          }
+        if (!has_volume)
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] = scene.domain.lower_corner[d];
+              upper[d] = scene.domain.upper_corner[d];
+            }
+      }
+    window = BoundingBox<dim>(std::make_pair(lower, upper));
+
+    for (const auto &c : centres)
+      {
+        bool inside = true;
+        for (unsigned int d = 0; d < dim; ++d)
+          inside = inside && c[d] > lower[d] + 1e-9 * (upper[d] - lower[d]) &&
+                   c[d] < upper[d] - 1e-9 * (upper[d] - lower[d]);
+        interior.push_back(inside);
+        has_interior = has_interior || inside;
+      }
+    for (unsigned int d = 0; d < dim && centres.size() >= 2; ++d)
+      if (spread(centres, d) > 0)
+        shrinkage_axes.push_back(d);
+
+    const std::string &directory = scene.output.directory;
+    if (directory.empty())
+      return;
+    necks_log = std::make_unique<MetricsLog>(
+      directory + "/necks.csv",
+      std::vector<std::string>{"step", "time", "particle_i", "particle_j",
+                               "neck_radius"},
+      comm);
+    std::vector<std::string> pore_columns = {
+      "step", "time", "pore", "open", "volume", "area", "sphericity"};
+    for (unsigned int d = 0; d < dim; ++d)
+      pore_columns.push_back(std::string("centroid_") + "xyz"[d]);
+    pores_log =
+      std::make_unique<MetricsLog>(directory + "/pores.csv", pore_columns, comm);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        events_log.open(directory + "/pore_events.csv");
+        if (!events_log)
+          throw std::runtime_error("cannot write '" + directory +
+                                   "/pore_events.csv'");
+        events_log << "time,step,event,pore,volume" << std::endl;
+      }
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  PackingAnalysis<dim>::column_names() const
+  {
+    std::vector<std::string> names = {"relative_density",
+                                      "open_porosity",
+                                      "closed_porosity",
+                                      "closed_pores",
+                                      "closed_pore_volume",
+                                      "neck_min",
+                                      "neck_mean",
+                                      "neck_max",
+                                      "contacts",
+                                      "coordination_number"};
+    if (has_interior)
+      names.push_back("interior_coordination_number");
+    for (const unsigned int d : shrinkage_axes)
+      names.push_back(std::string("size_ratio_") + "xyz"[d]);
+    return names;
+  }
+
+  template <int dim>
+  typename PackingAnalysis<dim>::SolidMeasures
+  PackingAnalysis<dim>::measure_solid(const LevelSetField<dim> &level_set) const
+  {
+    SolidMeasures result;
+    const unsigned int          n = particles.size();
+    std::vector<double>         volume(n, 0.);
+    std::vector<Tensor<1, dim>> moment(n);
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && window.point_inside(cell->center()))
+        result.window_volume += cell->measure();
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.solid_flags = update_JxW_values | update_quadrature_points;
+    integrands.on_solid    = [&](const auto &cell, const auto &values) {
+      double cell_solid = 0;
+      Tensor<1, dim> cell_moment;
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          cell_solid += values.JxW(q);
+          cell_moment += values.JxW(q) * values.quadrature_point(q);
+        }
+      if (window.point_inside(cell->center()))
+        result.window_solid += cell_solid;
+      // Cells are small against particles: the cell centre decides.
+      unsigned int nearest = 0;
+      double       power   = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < n; ++i)
+        if (const double p =
+              cell->center().distance_square(centres[i]) -
+              particles[i][dim] * particles[i][dim];
+            p < power)
+          {
+            power   = p;
+            nearest = i;
+          }
+      if (n > 0)
+        {
+          volume[nearest] += cell_solid;
+          moment[nearest] += cell_moment;
+        }
+    };
+    interface_measures::integrate_regions(level_set, integrands);
+    result.window_volume = Utilities::MPI::sum(result.window_volume, comm);
+    result.window_solid  = Utilities::MPI::sum(result.window_solid, comm);
+    Utilities::MPI::sum(volume, comm, volume);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const Tensor<1, dim> m = Utilities::MPI::sum(moment[i], comm);
+        result.centroids.push_back(
+          volume[i] > 0 ? Point<dim>(m / volume[i]) : centres[i]);
+      }
+    return result;
+  }
+
+  template <int dim>
+  std::vector<double>
+  PackingAnalysis<dim>::measure(const unsigned int        step,
+                                const double              t,
+                                const LevelSetField<dim> &level_set)
+  {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+
+    const SolidMeasures solid = measure_solid(level_set);
+    const double relative_density =
+      solid.window_volume > 0 ? solid.window_solid / solid.window_volume : nan;
+
+    last_pores = find_pores(level_set, symmetry_boundaries, window);
+    const std::vector<Pore<dim>> &pores = last_pores;
+    std::vector<typename PoreTracker<dim>::Event> events;
+    const std::vector<unsigned int> ids = tracker.update(pores, events);
+    double closed_in_window = 0, closed_volume = 0;
+    unsigned int n_closed = 0;
+    for (const auto &pore : pores)
+      if (!pore.open)
+        {
+          ++n_closed;
+          closed_volume += pore.volume;
+          closed_in_window += pore.volume_in_window;
+        }
+    const double closed_porosity =
+      solid.window_volume > 0 ? closed_in_window / solid.window_volume : nan;
+
+    last_necks        = neck_measures::pair_necks(level_set, particles);
+    const auto &necks = last_necks;
+    double       neck_min = nan, neck_max = nan, neck_sum = 0;
+    unsigned int contacts = 0;
+    std::vector<unsigned int> coordination(particles.size(), 0);
+    for (const auto &neck : necks)
+      if (neck.radius > 0)
+        {
+          neck_min = std::fmin(neck_min, neck.radius);
+          neck_max = std::fmax(neck_max, neck.radius);
+          neck_sum += neck.radius;
+          ++contacts;
+          ++coordination[neck.i];
+          ++coordination[neck.j];
+        }
+    unsigned int interior_count = 0, interior_contacts = 0;
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      if (interior[i])
+        {
+          ++interior_count;
+          interior_contacts += coordination[i];
+        }
+
+    std::vector<double> row = {
+      relative_density,
+      1 - relative_density - closed_porosity,
+      closed_porosity,
+      double(n_closed),
+      closed_volume,
+      neck_min,
+      contacts > 0 ? neck_sum / contacts : nan,
+      neck_max,
+      double(contacts),
+      particles.empty() ? nan : 2. * contacts / particles.size()};
+    if (has_interior)
+      row.push_back(double(interior_contacts) / interior_count);
+    if (initial_spread.empty())
+      for (const unsigned int d : shrinkage_axes)
+        initial_spread.push_back(spread(solid.centroids, d));
+    for (unsigned int a = 0; a < shrinkage_axes.size(); ++a)
+      row.push_back(spread(solid.centroids, shrinkage_axes[a]) /
+                    initial_spread[a]);
+
+    if (necks_log)
+      {
+        for (const auto &neck : necks)
+          necks_log->add_row(
+            {double(step), t, double(neck.i), double(neck.j), neck.radius});
+        for (unsigned int p = 0; p < pores.size(); ++p)
+          {
+            std::vector<double> values = {double(step),
+                                          t,
+                                          double(ids[p]),
+                                          double(pores[p].open),
+                                          pores[p].volume,
+                                          pores[p].area,
+                                          pores[p].sphericity()};
+            for (unsigned int d = 0; d < dim; ++d)
+              values.push_back(pores[p].centroid[d]);
+            pores_log->add_row(values);
+          }
+        if (events_log.is_open())
+          {
+            events_log << std::setprecision(12);
+            for (const auto &event : events)
+              events_log << t << ',' << step << ',' << event.name << ','
+                         << event.pore << ',' << event.volume << '\n';
+            events_log.flush();
+          }
+      }
+    return row;
+  }
+
+  template class PackingAnalysis<2>;
+  template class PackingAnalysis<3>;
+} // namespace levelsinter
