@@ -21,7 +21,8 @@ namespace levelsinter
         std::make_unique<ViscousFlow<dim>>(scene.viscous_flow,
                                            filter,
                                            scene.refinement.max_level,
-                                           timer));
+                                           timer,
+                                           scene.phase_law));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));

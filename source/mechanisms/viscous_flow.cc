@@ -19,15 +19,20 @@ namespace levelsinter
   ViscousFlow<dim>::ViscousFlow(const ViscousFlowParameters &parameters,
                                 const LevelSetFilter        &filter,
                                 const unsigned int           band_level,
-                                TimerOutput                 &timer)
+                                TimerOutput                 &timer,
+                                const PhaseLawParameters    &law)
     : parameters(parameters)
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
-    , phases(parameters.solid_viscosity,
-             parameters.fluid_viscosity,
-             parameters.fluid_compressibility)
-  {}
+    , phases(make_phase_law<dim>(law, parameters))
+  {
+    if (phases->has_history())
+      throw std::runtime_error(
+        "entry 'Phase law/Law': viscous flow moves the particles with "
+        "their Newtonian velocity and needs 'newtonian' (the elastic solid "
+        "belongs to volume diffusion)");
+  }
 
   template <int dim>
   void
@@ -53,7 +58,7 @@ namespace levelsinter
     settings.max_iterations         = parameters.max_iterations;
     // The DoFHandler is tied to the triangulation, which the time loop
     // builds after the mechanisms: create the operator on first use.
-    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, phases);
+    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
     operator_->setup_dofs();
 
     if (settings.form == Form::csf_curvature)

@@ -312,6 +312,7 @@ namespace levelsinter
     prm.leave_subsection();
 
     ViscousFlowParameters::declare_parameters(prm);
+    PhaseLawParameters::declare_parameters(prm);
     prm.enter_subsection("Surface diffusion");
     {
       prm.declare_entry("Enabled",
@@ -552,6 +553,7 @@ namespace levelsinter
     prm.leave_subsection();
 
     viscous_flow.parse_parameters(prm, d);
+    phase_law.parse_parameters(prm);
     prm.enter_subsection("Surface diffusion");
     surface_diffusion.enabled          = prm.get_bool("Enabled");
     surface_diffusion.coefficient      = prm.get_double("Coefficient");

@@ -89,9 +89,10 @@ namespace levelsinter
 
     TwoPhaseStokes(const Triangulation<dim> &tria,
                    const Settings           &settings,
-                   const PhaseLaw           &phase_law);
+                   const PhaseLaw<dim>      &phase_law);
 
-    /** Number the DoFs (velocity block, then pressure) for the mesh. */
+    /** Number the DoFs (velocity block, then pressure) for the mesh; the
+     * displacement starts at zero. */
     void
     setup_dofs();
 
@@ -117,6 +118,25 @@ namespace levelsinter
      */
     void
     remove_rigid_motion(const LevelSetField<dim> &alpha);
+
+    /**
+     * Displacement of a law with history (PhaseLaw::has_history()):
+     * u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity.
+     * Call once per accepted step, after solve().
+     */
+    void
+    advance_displacement(const double dt);
+
+    /**
+     * The displacement u^{n-1} that the next assembly reads (velocity
+     * block; the pressure block is unused), ghosted. Writable so that a
+     * mesh change can carry it over.
+     */
+    BlockVector &
+    displacement()
+    {
+      return old_displacement;
+    }
 
     /** The ghosted solution (v, p). */
     const BlockVector &
@@ -152,7 +172,7 @@ namespace levelsinter
 
     Settings                  settings;
     const FreeRigidMotions    free_motions;
-    const PhaseLaw           &phase_law;
+    const PhaseLaw<dim>      &phase_law;
     FESystem<dim>             finite_element;
     DoFHandler<dim>           dofs;
     std::vector<IndexSet>     owned_partitioning;
@@ -170,5 +190,6 @@ namespace levelsinter
     TrilinosWrappers::SparseMatrix monolithic_matrix;
     TrilinosWrappers::MPI::Vector  monolithic_rhs;
     BlockVector                         ghosted_solution;
+    BlockVector                         old_displacement;
   };
 } // namespace levelsinter

@@ -3,6 +3,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 
+#include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <string>
@@ -149,5 +150,6 @@ namespace levelsinter
     } output;
 
     ViscousFlowParameters viscous_flow;
+    PhaseLawParameters    phase_law;
   };
 } // namespace levelsinter
