@@ -9,7 +9,8 @@
 //
 //   levelsinter_elastic_inclusion SCENE.prm LEVELS [options]
 //
-// LEVELS: comma-separated uniform refinement levels. Options: --ratios
+// LEVELS: comma-separated refinement levels (uniform meshes, or the band
+// around the interface with --min-level M outside it). Options: --ratios
 // r1,r2,... (eta_f / (G dt), default 1e-5), --steps N (rate-form steps,
 // default 1), --csv FILE, --set ENTRY=VALUE and limits on the finest
 // level, all steps and ratios: --max-l2-in, --max-l2-out (L2 error of p
@@ -126,6 +127,7 @@ namespace
       const std::vector<unsigned int> &levels,
       const std::vector<double>       &ratios,
       const unsigned int               n_steps,
+      const int                        min_level,
       const Options                   &options)
   {
     Table table({"level", "h", "R_over_h", "ratio", "step", "dofs",
@@ -138,19 +140,24 @@ namespace
       for (const unsigned int level : levels)
         {
           const auto   base = read_scene(scene_file, options.overrides);
-          const double band =
-            std::max(base.level_set.filter_thickness,
-                     6 * (base.domain.upper_corner[0] -
-                          base.domain.lower_corner[0]) /
-                       base.domain.subdivisions[0] / std::pow(2., level));
+          const double h_level = (base.domain.upper_corner[0] -
+                                  base.domain.lower_corner[0]) /
+                                 base.domain.subdivisions[0] /
+                                 std::pow(2., level);
+          // A band of 6 cells inside a filter of 8.
+          const double band   = std::max(base.refinement.band_width,
+                                       6 * h_level);
+          const double filter = std::max(base.level_set.filter_thickness,
+                                         8 * h_level);
           auto overrides = options.overrides;
           overrides.insert(
             overrides.end(),
             {// The interface does not move: only the scene's band checks.
-             {"Level set/Filter thickness", std::to_string(band)},
+             {"Level set/Filter thickness", std::to_string(filter)},
              {"Mesh refinement/Band width", std::to_string(band)},
              {"Time/CFL number", "0.1"},
-             {"Mesh refinement/Minimum level", std::to_string(level)},
+             {"Mesh refinement/Minimum level",
+              std::to_string(min_level < 0 ? level : unsigned(min_level))},
              {"Mesh refinement/Maximum level", std::to_string(level)},
              {"Output/Directory", "elastic_inclusion_output"},
              {"Output/Field formats", "none"}});
@@ -177,17 +184,11 @@ namespace
                                      flow.fluid_viscosity,
                                      flow.fluid_compressibility);
           law.set_time_step(dt);
-          typename TwoPhaseStokes<dim>::Settings settings;
-          settings.surface_tension = flow.surface_tension;
+          // Sharp surface tension (Eq. 108 on {alpha_h = 0}) whatever the
+          // scene says.
+          auto settings = TwoPhaseStokes<dim>::Settings::from(
+            flow, scene.refinement.max_level);
           settings.form = TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
-          settings.interface_half_width_cells = flow.interface_half_width;
-          settings.band_level             = scene.refinement.max_level;
-          settings.stabilisation_constant = flow.stabilisation_constant;
-          settings.external_pressure      = flow.external_pressure;
-          settings.symmetry_boundaries    = flow.symmetry_boundaries;
-          settings.direct_solver          = flow.direct_solver;
-          settings.tolerance              = flow.solver_tolerance;
-          settings.max_iterations         = flow.max_iterations;
           TwoPhaseStokes<dim> stokes(simulation.triangulation(), settings, law);
           stokes.setup_dofs();
 
@@ -249,6 +250,7 @@ main(int argc, char **argv)
           "usage: levelsinter_elastic_inclusion SCENE.prm LEVELS [options]");
       std::vector<double> ratios = {1e-5};
       unsigned int        steps  = 1;
+      int                 min_level = -1; // uniform meshes
       std::vector<std::string> rest;
       for (unsigned int i = 2; i < args.size(); ++i)
         if (args[i] == "--ratios" && i + 1 < args.size())
@@ -256,6 +258,8 @@ main(int argc, char **argv)
             Utilities::split_string_list(args[++i], ','));
         else if (args[i] == "--steps" && i + 1 < args.size())
           steps = std::stoi(args[++i]);
+        else if (args[i] == "--min-level" && i + 1 < args.size())
+          min_level = std::stoi(args[++i]);
         else
           rest.push_back(args[i]);
       rest.insert(rest.begin(), args.begin(), args.begin() + 2);
@@ -263,9 +267,9 @@ main(int argc, char **argv)
       const auto levels  = study::parse_levels(args[1]);
       const auto scene   = read_scene(args[0], options.overrides);
       if (scene.dimension == 2)
-        run<2>(args[0], levels, ratios, steps, options);
+        run<2>(args[0], levels, ratios, steps, min_level, options);
       else
-        run<3>(args[0], levels, ratios, steps, options);
+        run<3>(args[0], levels, ratios, steps, min_level, options);
     }
   catch (const std::exception &e)
     {

@@ -135,9 +135,7 @@ namespace levelsinter
   {
     for (const auto &point : data.surface)
       {
-        const Tensor<2, dim> projector =
-          unit_symmetric_tensor<dim>() - outer_product(point.normal,
-                                                       point.normal);
+        const Tensor<2, dim> projector = point.projector();
         for (unsigned int i = 0; i < data.n_dofs; ++i)
           if (!data.is_pressure(i))
             cell.rhs(i) -=
@@ -171,9 +169,7 @@ namespace levelsinter
   {
     for (const auto &point : data.surface)
       {
-        const Tensor<2, dim> projector =
-          unit_symmetric_tensor<dim>() - outer_product(point.normal,
-                                                       point.normal);
+        const Tensor<2, dim> projector = point.projector();
         // grad_Gamma w = (grad w) P; the upper triangle suffices.
         for (unsigned int i = 0; i < data.n_dofs; ++i)
           if (!data.is_pressure(i))

@@ -50,6 +50,29 @@ namespace levelsinter
   {}
 
   template <int dim>
+  typename TwoPhaseStokes<dim>::Settings
+  TwoPhaseStokes<dim>::Settings::from(const ViscousFlowParameters &parameters,
+                                      const unsigned int band_level)
+  {
+    Settings settings;
+    settings.surface_tension = parameters.surface_tension;
+    settings.form = parameters.surface_tension_form == "csf" ?
+                      SurfaceTensionForm::csf :
+                    parameters.surface_tension_form == "sharp" ?
+                      SurfaceTensionForm::sharp :
+                      SurfaceTensionForm::csf_curvature;
+    settings.interface_half_width_cells = parameters.interface_half_width;
+    settings.band_level                 = band_level;
+    settings.stabilisation_constant     = parameters.stabilisation_constant;
+    settings.external_pressure          = parameters.external_pressure;
+    settings.symmetry_boundaries        = parameters.symmetry_boundaries;
+    settings.direct_solver              = parameters.direct_solver;
+    settings.tolerance                  = parameters.solver_tolerance;
+    settings.max_iterations             = parameters.max_iterations;
+    return settings;
+  }
+
+  template <int dim>
   void
   TwoPhaseStokes<dim>::setup_dofs()
   {

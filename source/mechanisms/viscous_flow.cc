@@ -41,21 +41,9 @@ namespace levelsinter
     const auto &tria = alpha.dof_handler().get_triangulation();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
     step_start_time = -1;
-    typename TwoPhaseStokes<dim>::Settings settings;
-    settings.surface_tension = parameters.surface_tension;
+    const auto settings =
+      TwoPhaseStokes<dim>::Settings::from(parameters, band_level);
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
-    settings.form = parameters.surface_tension_form == "csf" ? Form::csf :
-                    parameters.surface_tension_form == "sharp" ?
-                                                               Form::sharp :
-                                                               Form::csf_curvature;
-    settings.interface_half_width_cells = parameters.interface_half_width;
-    settings.band_level                 = band_level;
-    settings.stabilisation_constant = parameters.stabilisation_constant;
-    settings.external_pressure      = parameters.external_pressure;
-    settings.symmetry_boundaries    = parameters.symmetry_boundaries;
-    settings.direct_solver          = parameters.direct_solver;
-    settings.tolerance              = parameters.solver_tolerance;
-    settings.max_iterations         = parameters.max_iterations;
     // The DoFHandler is tied to the triangulation, which the time loop
     // builds after the mechanisms: create the operator on first use.
     operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);

@@ -33,6 +33,13 @@ namespace levelsinter
       Tensor<1, dim>              normal;
       double                      dS = 0;
       std::vector<Tensor<2, dim>> grad_w;
+
+      /** The tangential projector I - n (x) n. */
+      Tensor<2, dim>
+      projector() const
+      {
+        return unit_symmetric_tensor<dim>() - outer_product(normal, normal);
+      }
     };
 
     /** One quadrature point of a free box face: outer normal, weight and

@@ -16,6 +16,7 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <vector>
 
@@ -52,6 +53,9 @@ namespace levelsinter
    * position x + dt v adds dt gamma int_Gamma grad_Gamma v : grad_Gamma w
    * to the velocity block, on the same surface measure as the load (sharp
    * for sharp, smeared otherwise).
+   * Each term is one StokesAssembler (stokes_assemblers.h) over the cell
+   * data of StokesCellData; a law with history (the elastic solid) reads
+   * the displacement kept here (advance_displacement()).
    */
   template <int dim>
   class TwoPhaseStokes
@@ -83,6 +87,12 @@ namespace levelsinter
       bool                            direct_solver = false;
       double                          tolerance     = 1e-10; // relative
       unsigned int                    max_iterations = 500;
+
+      /** The settings a scene's `Viscous flow` entries give, with the
+       * interface band at @p band_level. */
+      static Settings
+      from(const ViscousFlowParameters &parameters,
+           const unsigned int           band_level);
     };
 
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
