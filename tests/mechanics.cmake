@@ -42,3 +42,9 @@ set_tests_properties(mechanics_elastic_inclusion_2d
   mechanics_elastic_inclusion_3d study_elastic_inclusion_2d
   study_elastic_inclusion_ratio_2d
   PROPERTIES RESOURCE_LOCK elastic_inclusion_output)
+
+# The viscous mechanism moves particles with v: an elastic phase law there
+# is refused with the entry named.
+bad_input_test(viscous_elastic_law "Phase law/Law"
+  --set "Phase law/Law=elastic-solid"
+  ${INCLUSION_SCENES}/two_cylinders_2d.prm)
