@@ -27,6 +27,7 @@
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
 
 #include <algorithm>
@@ -40,13 +41,40 @@ namespace levelsinter
   template <int dim>
   TwoPhaseStokes<dim>::TwoPhaseStokes(const Triangulation<dim> &tria,
                                       const Settings           &settings,
-                                      const PhaseLaw           &phase_law)
+                                      const PhaseLaw<dim>      &phase_law)
     : settings(settings)
     , free_motions(dim, settings.symmetry_boundaries)
     , phase_law(phase_law)
     , finite_element(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1)
     , dofs(tria)
   {}
+
+  template <int dim>
+  typename TwoPhaseStokes<dim>::Settings
+  TwoPhaseStokes<dim>::Settings::from(
+    const ViscousFlowParameters           &parameters,
+    const std::vector<types::boundary_id> &symmetry_planes,
+    const unsigned int                     band_level)
+  {
+    Settings settings;
+    settings.surface_tension = parameters.surface_tension;
+    using Choice  = ViscousFlowParameters::SurfaceTensionForm;
+    settings.form = parameters.surface_tension_form == Choice::csf ?
+                      SurfaceTensionForm::csf :
+                    parameters.surface_tension_form == Choice::sharp ?
+                      SurfaceTensionForm::sharp :
+                      SurfaceTensionForm::csf_curvature;
+    settings.interface_half_width_cells = parameters.interface_half_width;
+    settings.band_level                 = band_level;
+    settings.stabilisation_constant     = parameters.stabilisation_constant;
+    settings.external_pressure          = parameters.external_pressure;
+    settings.symmetry_boundaries        = symmetry_planes;
+    settings.direct_solver =
+      parameters.linear_solver == ViscousFlowParameters::LinearSolver::direct;
+    settings.tolerance                  = parameters.solver_tolerance;
+    settings.max_iterations             = parameters.max_iterations;
+    return settings;
+  }
 
   template <int dim>
   void
@@ -109,6 +137,7 @@ namespace levelsinter
       }
     system_rhs.reinit(owned_partitioning, comm);
     ghosted_solution.reinit(owned_partitioning, relevant_partitioning, comm);
+    old_displacement.reinit(owned_partitioning, relevant_partitioning, comm);
   }
 
   template <int dim>
@@ -202,9 +231,6 @@ namespace levelsinter
     const bool              curvature_form =
       settings.form == SurfaceTensionForm::csf_curvature && gamma != 0;
     const bool sharp = settings.form == SurfaceTensionForm::sharp && gamma != 0;
-    // Smeared surface measure delta(alpha) |grad alpha| dV: the tensorial
-    // csf load and, for both csf forms, the semi-implicit term.
-    const bool   smeared     = !sharp && gamma != 0;
     const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
     if (curvature_form &&
         curvature.size() != alpha.dof_handler().n_dofs())
@@ -288,60 +314,43 @@ namespace levelsinter
       }
 
     const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
     const unsigned int               n = finite_element.dofs_per_cell;
-    FullMatrix<double>               cell_matrix(n, n), cell_schur(n, n);
-    Vector<double>                   cell_rhs(n);
+    std::vector<unsigned int>        component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = finite_element.system_to_component_index(i).first;
+    StokesCellData<dim>                  data(component);
+    CellContribution                     cell_contribution(n);
     std::vector<types::global_dof_index> indices(n);
     std::vector<double>                  alpha_q(quadrature.size());
-    std::vector<PhaseCoefficients>       law_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_alpha_q(quadrature.size());
     std::vector<double>                  kappa_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> eps(n);
-    std::vector<Tensor<2, dim>>          grad_w(n);
-    std::vector<Tensor<1, dim>>          w(n);
-    std::vector<double>                  div(n), q(n);
-    std::vector<Tensor<1, dim>>          grad_q(n);
-    std::vector<unsigned int>            component(n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = finite_element.system_to_component_index(i).first;
+    std::vector<SymmetricTensor<2, dim>> old_strain_q(quadrature.size());
+    const bool history = phase_law.has_history();
 
-    // The tensorial load (if @p tensorial) and the semi-implicit
-    // Laplace-Beltrami term at one point of the surface measure with unit
-    // normal @p normal and weight @p dS; @p gradient(i) is grad w_i there.
-    const auto add_surface_point = [&](const Tensor<1, dim> &normal,
-                                       const double          dS,
-                                       const bool            tensorial,
-                                       const auto           &gradient) {
-      const Tensor<2, dim> projector =
-        unit_symmetric_tensor<dim>() - outer_product(normal, normal);
-      for (unsigned int i = 0; i < n; ++i)
-        if (component[i] < dim)
-          {
-            const Tensor<2, dim> grad_i = gradient(i);
-            if (tensorial)
-              cell_rhs(i) -= gamma * scalar_product(projector, grad_i) * dS;
-            if (implicit_dt > 0)
-              {
-                // grad_Gamma w = (grad w) P; the upper triangle suffices
-                // (mirrored below).
-                const Tensor<2, dim> surface_i = grad_i * projector;
-                for (unsigned int j = i; j < n; ++j)
-                  if (component[j] < dim)
-                    cell_matrix(i, j) +=
-                      implicit_dt * gamma *
-                      scalar_product(surface_i, gradient(j) * projector) * dS;
-              }
-          }
-    };
+    // The terms of the operator, chosen once for this assembly.
+    std::vector<std::unique_ptr<StokesAssembler<dim>>> assemblers;
+    assemblers.push_back(std::make_unique<BulkAssembler<dim>>());
+    assemblers.push_back(std::make_unique<StabilisationAssembler<dim>>());
+    if (curvature_form)
+      assemblers.push_back(std::make_unique<BalancedForceAssembler<dim>>());
+    else if (gamma != 0)
+      assemblers.push_back(
+        std::make_unique<TensorialSurfaceTensionAssembler<dim>>(gamma));
+    if (implicit_dt > 0)
+      assemblers.push_back(
+        std::make_unique<LaplaceBeltramiAssembler<dim>>(gamma, implicit_dt));
+    if (settings.external_pressure != 0)
+      assemblers.push_back(
+        std::make_unique<TractionAssembler<dim>>(settings.external_pressure));
+    // The surface measure is needed by the tensorial load and the
+    // Laplace-Beltrami term.
+    const bool surface_measure = (gamma != 0 && !curvature_form) ||
+                                 implicit_dt > 0;
 
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          cell_matrix = 0;
-          cell_schur  = 0;
-          cell_rhs    = 0;
           const double h = cell->diameter() / std::sqrt(double(dim));
           // The smoothing follows the cell where it is refined beyond the
           // band: a jump narrower than the cell would be sampled, not
@@ -374,9 +383,10 @@ namespace levelsinter
           const unsigned int n_q = values.get_quadrature().size();
           values.reinit(cell);
           level_set_values.reinit(ls_cell);
+          data.reinit(values);
+          data.h = h;
           alpha_q.resize(n_q);
           grad_alpha_q.resize(n_q);
-          law_q.resize(n_q);
           level_set_values.get_function_values(alpha.alpha(), alpha_q);
           level_set_values.get_function_gradients(alpha.alpha(),
                                                   grad_alpha_q);
@@ -386,121 +396,64 @@ namespace levelsinter
               level_set_values.get_function_gradients(solid_fraction,
                                                       grad_heaviside_q);
             }
+          if (history)
+            {
+              old_strain_q.resize(n_q);
+              values[velocity].get_function_symmetric_gradients(
+                old_displacement, old_strain_q);
+            }
           // The Schur approximation weighs the pressure mass with the
           // cell-mean viscosity (Grinevich & Olshanskii 2009): with the
           // pointwise 1/eta of the smeared interface the outer iterations
           // grew with the contrast (doc/numerics.md).
-          double a1_cell = 0;
+          data.a1_cell = 0;
           for (const unsigned int k : values.quadrature_point_indices())
             {
-              law_q[k] = phase_law.coefficients(
-                {heaviside.solid_fraction(alpha_q[k]),
-                 1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)});
-              a1_cell += law_q[k].a1 / n_q;
-            }
-
-          for (const unsigned int k : values.quadrature_point_indices())
-            {
-              const PhaseCoefficients &law = law_q[k];
-              const double tau = settings.stabilisation_constant * law.a2 *
-                                 h * h / law.a1;
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  eps[i]    = values[velocity].symmetric_gradient(i, k);
-                  grad_w[i] = values[velocity].gradient(i, k);
-                  w[i]      = values[velocity].value(i, k);
-                  div[i]    = values[velocity].divergence(i, k);
-                  q[i]      = values[pressure].value(i, k);
-                  grad_q[i] = values[pressure].gradient(i, k);
-                }
-              const double JxW = values.JxW(k);
-              // Each shape function of the FESystem has one component:
-              // only velocity-velocity (eps:eps), velocity-pressure (div q)
-              // and pressure-pressure pairs are nonzero. The operator is
-              // symmetric apart from a2, so the lower triangle of the
-              // same-type pairs is copied afterwards.
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const bool i_pressure = component[i] == dim;
-                  for (unsigned int j = i; j < n; ++j)
-                    {
-                      const bool j_pressure = component[j] == dim;
-                      if (!i_pressure && !j_pressure)
-                        cell_matrix(i, j) += law.a1 * eps[i] * eps[j] * JxW;
-                      else if (i_pressure && j_pressure)
-                        {
-                          cell_matrix(i, j) -=
-                            (law.compressibility * q[i] * q[j] +
-                             tau * grad_q[i] * grad_q[j]) *
-                            JxW;
-                          // Schur approximation M_{1/eta_K} + C (eta_K =
-                          // a1_cell / 2).
-                          cell_schur(i, j) +=
-                            ((2 / a1_cell + law.compressibility) * q[i] *
-                               q[j] +
-                             tau * grad_q[i] * grad_q[j]) *
-                            JxW;
-                        }
-                      else
-                        {
-                          // a2 weighs p in the momentum equation only (the
-                          // elastic law has a2 != 1): both entries here.
-                          const unsigned int v = i_pressure ? j : i;
-                          const unsigned int p = i_pressure ? i : j;
-                          cell_matrix(v, p) -= law.a2 * div[v] * q[p] * JxW;
-                          cell_matrix(p, v) -= div[v] * q[p] * JxW;
-                        }
-                    }
-                }
-
+              const PhaseFractions fractions{
+                heaviside.solid_fraction(alpha_q[k]),
+                1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
+              data.law[k] = phase_law.coefficients(fractions);
+              if (history)
+                data.history[k] =
+                  phase_law.history(fractions, old_strain_q[k]);
+              data.a1_cell += data.law[k].a1 / n_q;
+              data.tau[k] = settings.stabilisation_constant * data.law[k].a2 *
+                            h * h / data.law[k].a1;
               if (curvature_form)
-                {
-                  // f = gamma kappa grad H_h points into the solid (grad H_s
-                  // = -n delta), so p = gamma kappa H_h balances it. The
-                  // pressure rows carry f in tau (grad p - f) . grad q.
-                  const Tensor<1, dim> f =
-                    gamma * kappa_q[k] * grad_heaviside_q[k];
-                  for (unsigned int i = 0; i < n; ++i)
-                    cell_rhs(i) += (component[i] < dim ?
-                                      f * w[i] :
-                                      -tau * (f * grad_q[i])) *
-                                   JxW;
-                }
-
-              if (smeared)
-                {
-                  // dS -> delta(alpha) |grad alpha| dV: the co-area formula
-                  // makes the smeared integral the average of the sharp one
-                  // over the level sets |alpha| < E.
-                  const double norm = grad_alpha_q[k].norm();
-                  const double weight =
-                    heaviside.dirac(alpha_q[k]) * norm * JxW;
-                  if (weight > 0 && (!curvature_form || implicit_dt > 0))
-                    add_surface_point(grad_alpha_q[k] / norm,
-                                      weight,
-                                      !curvature_form,
-                                      [&](const unsigned int i) {
-                                        return grad_w[i];
-                                      });
-                }
+                data.balanced_force[k] =
+                  gamma * kappa_q[k] * grad_heaviside_q[k];
             }
 
-          if (sharp)
+          if (surface_measure && !sharp)
+            for (const unsigned int k : values.quadrature_point_indices())
+              {
+                // dS -> delta(alpha) |grad alpha| dV: the co-area formula
+                // makes the smeared integral the average of the sharp one
+                // over the level sets |alpha| < E.
+                const double norm = grad_alpha_q[k].norm();
+                const double weight =
+                  heaviside.dirac(alpha_q[k]) * norm * data.JxW[k];
+                if (weight > 0)
+                  data.surface.push_back(
+                    {grad_alpha_q[k] / norm, weight, data.grad_w[k]});
+              }
+          if (surface_measure && sharp)
             {
               cut_values->reinit(cell);
               if (const auto &surface = cut_values->get_surface_fe_values())
                 for (const unsigned int k :
                      surface->quadrature_point_indices())
-                  add_surface_point(surface->normal_vector(k),
-                                    surface->JxW(k),
-                                    true,
-                                    [&](const unsigned int i) {
-                                      return (*surface)[velocity].gradient(i,
-                                                                           k);
-                                    });
+                  {
+                    typename StokesCellData<dim>::SurfacePoint point{
+                      surface->normal_vector(k), surface->JxW(k), {}};
+                    point.grad_w.resize(n);
+                    for (unsigned int i = 0; i < n; ++i)
+                      point.grad_w[i] = (*surface)[velocity].gradient(i, k);
+                    data.surface.push_back(std::move(point));
+                  }
             }
 
-          // Free faces: traction -p_ext n.
+          // Free faces: those not on a symmetry plane.
           if (settings.external_pressure != 0)
             for (const auto &face : cell->face_iterators())
               if (face->at_boundary() &&
@@ -512,25 +465,28 @@ namespace levelsinter
                   face_values.reinit(cell, face);
                   for (const unsigned int k :
                        face_values.quadrature_point_indices())
-                    for (unsigned int i = 0; i < n; ++i)
-                      cell_rhs(i) -= settings.external_pressure *
-                                     (face_values[velocity].value(i, k) *
-                                      face_values.normal_vector(k)) *
-                                     face_values.JxW(k);
+                    {
+                      typename StokesCellData<dim>::FacePoint point{
+                        face_values.normal_vector(k), face_values.JxW(k), {}};
+                      point.w.resize(n);
+                      for (unsigned int i = 0; i < n; ++i)
+                        point.w[i] = face_values[velocity].value(i, k);
+                      data.free_faces.push_back(std::move(point));
+                    }
                 }
 
-          for (unsigned int i = 0; i < n; ++i)
-            for (unsigned int j = 0; j < i; ++j)
-              if ((component[i] == dim) == (component[j] == dim))
-                {
-                  cell_matrix(i, j) = cell_matrix(j, i);
-                  cell_schur(i, j)  = cell_schur(j, i);
-                }
+          cell_contribution.reset();
+          for (const auto &assembler : assemblers)
+            assembler->assemble(data, cell_contribution);
+          symmetrise(data, cell_contribution);
           cell->get_dof_indices(indices);
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_rhs, indices, matrix, rhs);
+          constraints.distribute_local_to_global(cell_contribution.matrix,
+                                                 cell_contribution.rhs,
+                                                 indices,
+                                                 matrix,
+                                                 rhs);
           if (!settings.direct_solver)
-            constraints.distribute_local_to_global(cell_schur,
+            constraints.distribute_local_to_global(cell_contribution.schur,
                                                    indices,
                                                    schur_matrix);
         }
@@ -607,6 +563,18 @@ namespace levelsinter
     constraints.distribute(owned_solution);
     ghosted_solution = owned_solution;
     return iterations;
+  }
+
+  template <int dim>
+  void
+  TwoPhaseStokes<dim>::advance_displacement(const double dt)
+  {
+    // u^n = u^{n-1} + dt v^n (Eq. 92) on the velocity block; the pressure
+    // block of the vector is unused.
+    BlockVector owned(owned_partitioning, dofs.get_communicator());
+    owned = old_displacement;
+    owned.block(0).add(dt, ghosted_solution.block(0));
+    old_displacement = owned;
   }
 
   template <int dim>

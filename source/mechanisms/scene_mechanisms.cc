@@ -22,7 +22,8 @@ namespace levelsinter
                                            scene.domain.symmetry_planes,
                                            filter,
                                            scene.refinement.max_level,
-                                           timer));
+                                           timer,
+                                           scene.phase_law));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));

@@ -21,16 +21,21 @@ namespace levelsinter
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
                                 const unsigned int           band_level,
-                                TimerOutput                 &timer)
+                                TimerOutput                 &timer,
+                                const PhaseLawParameters    &law)
     : parameters(parameters)
     , symmetry_planes(symmetry_planes)
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
-    , phases(parameters.solid_viscosity,
-             parameters.fluid_viscosity,
-             parameters.fluid_compressibility)
-  {}
+    , phases(make_phase_law<dim>(law, parameters))
+  {
+    if (phases->has_history())
+      throw std::runtime_error(
+        "entry 'Phase law/Law': viscous flow moves the particles with "
+        "their Newtonian velocity and needs 'newtonian' (the elastic solid "
+        "belongs to volume diffusion)");
+  }
 
   template <int dim>
   void
@@ -39,26 +44,14 @@ namespace levelsinter
     const auto &tria = alpha.dof_handler().get_triangulation();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
     step_start_time = -1;
-    typename TwoPhaseStokes<dim>::Settings settings;
-    settings.surface_tension = parameters.surface_tension;
+    const auto settings =
+      TwoPhaseStokes<dim>::Settings::from(parameters,
+                                          symmetry_planes,
+                                          band_level);
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
-    using Choice = ViscousFlowParameters::SurfaceTensionForm;
-    settings.form = parameters.surface_tension_form == Choice::csf ? Form::csf :
-                    parameters.surface_tension_form == Choice::sharp ?
-                                                                     Form::sharp :
-                                                                     Form::csf_curvature;
-    settings.interface_half_width_cells = parameters.interface_half_width;
-    settings.band_level                 = band_level;
-    settings.stabilisation_constant = parameters.stabilisation_constant;
-    settings.external_pressure      = parameters.external_pressure;
-    settings.symmetry_boundaries    = symmetry_planes;
-    settings.direct_solver          = parameters.linear_solver ==
-                                      ViscousFlowParameters::LinearSolver::direct;
-    settings.tolerance              = parameters.solver_tolerance;
-    settings.max_iterations         = parameters.max_iterations;
     // The DoFHandler is tied to the triangulation, which the time loop
     // builds after the mechanisms: create the operator on first use.
-    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, phases);
+    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
     operator_->setup_dofs();
 
     if (settings.form == Form::csf_curvature)

@@ -66,6 +66,7 @@ namespace levelsinter
     VolumeCorrectionParameters::declare(prm);
     OutputParameters::declare(prm);
     AnalysisParameters::declare(prm);
+    PhaseLawParameters::declare(prm);
     declare_renamed_entries(prm, renamed_entries);
   }
 
@@ -145,6 +146,7 @@ namespace levelsinter
         volume_correction.parse(prm);
         output.parse(prm);
         analysis.parse(prm, dimension);
+        phase_law.parse(prm);
         check_across_sections();
       }
     catch (const std::runtime_error &e)

@@ -1,20 +1,40 @@
 #pragma once
 
+#include <deal.II/base/symmetric_tensor.h>
+
+#include <levelsinter/scene/phase_law_parameters.h>
+#include <levelsinter/scene/viscous_flow_parameters.h>
+
+#include <memory>
+
 namespace levelsinter
 {
+  using namespace dealii;
+
   /**
    * Coefficients of the mixed velocity-pressure operator at one point, as
    * the paper writes them for Eq. 93-94 and 99:
    *   a1 eps(v):eps(w) - a2 p div w,   -q div v - c_p p q,
    * with a1 = 2 eta_eff, a2 the pressure weight and c_p the compressibility
-   * (pressure-mass) coefficient. The right-hand sides that a phase may add
-   * (the elastic history term of Eq. 93-94) belong to the same law.
+   * (pressure-mass) coefficient.
    */
   struct PhaseCoefficients
   {
-    double a1          = 0; // 2 x effective viscosity
-    double a2          = 1; // weight of p in the momentum equation
+    double a1              = 0; // 2 x effective viscosity
+    double a2              = 1; // weight of p in the momentum equation
     double compressibility = 0; // c_p
+  };
+
+  /**
+   * Right-hand sides a law with memory adds at one point (Eq. 93-94 for
+   * the elastic solid): the momentum equation gets -stress : grad w, the
+   * continuity equation div v + c_p p = dilatation_rate.
+   */
+  template <int dim>
+  struct HistoryTerms
+  {
+    SymmetricTensor<2, dim> stress;
+    double                  dilatation_rate = 0;
   };
 
   /**
@@ -29,12 +49,13 @@ namespace levelsinter
   };
 
   /**
-   * How the two phases respond, as a function of the phase fractions. The operator (TwoPhaseStokes) assembles
-   * whatever law it is given; the viscous mechanism passes NewtonianPhases,
-   * the elastic-solid/fluid problem of volume diffusion (Eq. 93-94: a1 =
-   * 2(G dt H_s + eta H_f), a2 = (1 - 2G/3K) H_s + H_f, c_p = H_s/(K dt)) is
-   * another implementation of this interface.
+   * How the two phases respond, as a function of the phase fractions. The
+   * operator (TwoPhaseStokes) assembles whatever law it is given: the
+   * viscous mechanism passes NewtonianPhases, the elastic-solid/fluid
+   * problem of volume diffusion ElasticSolidFluid
+   * (make_phase_law() chooses by name).
    */
+  template <int dim>
   class PhaseLaw
   {
   public:
@@ -42,6 +63,28 @@ namespace levelsinter
 
     virtual PhaseCoefficients
     coefficients(const PhaseFractions &fractions) const = 0;
+
+    /** Whether history() is nonzero (then the operator needs the
+     * displacement of the previous step). */
+    virtual bool
+    has_history() const
+    {
+      return false;
+    }
+
+    /** The history right-hand sides for the strain @p old_strain of the
+     * previous step's displacement. */
+    virtual HistoryTerms<dim>
+    history(const PhaseFractions &, const SymmetricTensor<2, dim> &) const
+    {
+      return {};
+    }
+
+    /** The step a rate-form law discretises (Eq. 92); call before each
+     * assembly. Laws without memory ignore it. */
+    virtual void
+    set_time_step(const double)
+    {}
   };
 
   /**
@@ -55,7 +98,8 @@ namespace levelsinter
    * Hopper case at R/h = 20). c = 0 makes both phases incompressible (the
    * static-bubble benchmark).
    */
-  class NewtonianPhases : public PhaseLaw
+  template <int dim>
+  class NewtonianPhases : public PhaseLaw<dim>
   {
   public:
     NewtonianPhases(const double solid_viscosity,
@@ -81,4 +125,66 @@ namespace levelsinter
     double eta_f;
     double c;
   };
+
+  /**
+   * Linear elastic particles (shear modulus G, bulk modulus K) in a
+   * Newtonian atmosphere (eta_f), paper Eq. 86-94. With p = -K div u and
+   * u^n = u^{n-1} + dt v^n (Eq. 92) the solid's equilibrium
+   * 2G div eps(u) - (1 - 2G/3K) grad p = 0 becomes, for (v^n, p^n),
+   *   a1 = 2 (G dt H_s + eta_f H_f),  a2 = (1 - 2G/3K) H_s + H_f,
+   *   c_p = H_s / (K dt)  (+ the atmosphere's c H_bulk / eta_f),
+   * with the history -2G H_s eps(u^{n-1}) : eps(w) in the momentum and
+   * div v + c_p p = -H_s div u^{n-1} / dt (the paper's coefficients,
+   * checked). The atmosphere keeps the compressibility option of
+   * NewtonianPhases (0: incompressible, as in the paper).
+   */
+  template <int dim>
+  class ElasticSolidFluid : public PhaseLaw<dim>
+  {
+  public:
+    ElasticSolidFluid(const double shear_modulus,
+                      const double bulk_modulus,
+                      const double fluid_viscosity,
+                      const double fluid_compressibility)
+      : G(shear_modulus)
+      , K(bulk_modulus)
+      , eta_f(fluid_viscosity)
+      , c(fluid_compressibility)
+    {}
+
+    PhaseCoefficients
+    coefficients(const PhaseFractions &f) const override;
+
+    bool
+    has_history() const override
+    {
+      return true;
+    }
+
+    HistoryTerms<dim>
+    history(const PhaseFractions          &f,
+            const SymmetricTensor<2, dim> &old_strain) const override;
+
+    void
+    set_time_step(const double time_step) override
+    {
+      dt = time_step;
+    }
+
+  private:
+    double G;
+    double K;
+    double eta_f;
+    double c;
+    double dt = 0;
+  };
+
+  /**
+   * The law a scene asks for ('Phase law/Law'), with the atmosphere of
+   * 'Viscous flow'.
+   */
+  template <int dim>
+  std::unique_ptr<PhaseLaw<dim>>
+  make_phase_law(const PhaseLawParameters    &law,
+                 const ViscousFlowParameters &flow);
 } // namespace levelsinter

@@ -16,6 +16,7 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <vector>
 
@@ -52,6 +53,9 @@ namespace levelsinter
    * position x + dt v adds dt gamma int_Gamma grad_Gamma v : grad_Gamma w
    * to the velocity block, on the same surface measure as the load (sharp
    * for sharp, smeared otherwise).
+   * Each term is one StokesAssembler (stokes_assemblers.h) over the cell
+   * data of StokesCellData; a law with history (the elastic solid) reads
+   * the displacement kept here (advance_displacement()).
    */
   template <int dim>
   class TwoPhaseStokes
@@ -83,15 +87,24 @@ namespace levelsinter
       bool                            direct_solver = false;
       double                          tolerance     = 1e-10; // relative
       unsigned int                    max_iterations = 500;
+
+      /** The settings a scene's `Viscous flow` entries give, with the
+       * symmetry planes of its domain and the interface band at
+       * @p band_level. */
+      static Settings
+      from(const ViscousFlowParameters           &parameters,
+           const std::vector<types::boundary_id> &symmetry_planes,
+           const unsigned int                     band_level);
     };
 
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
     TwoPhaseStokes(const Triangulation<dim> &tria,
                    const Settings           &settings,
-                   const PhaseLaw           &phase_law);
+                   const PhaseLaw<dim>      &phase_law);
 
-    /** Number the DoFs (velocity block, then pressure) for the mesh. */
+    /** Number the DoFs (velocity block, then pressure) for the mesh; the
+     * displacement starts at zero. */
     void
     setup_dofs();
 
@@ -117,6 +130,25 @@ namespace levelsinter
      */
     void
     remove_rigid_motion(const LevelSetField<dim> &alpha);
+
+    /**
+     * Displacement of a law with history (PhaseLaw::has_history()):
+     * u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity.
+     * Call once per accepted step, after solve().
+     */
+    void
+    advance_displacement(const double dt);
+
+    /**
+     * The displacement u^{n-1} that the next assembly reads (velocity
+     * block; the pressure block is unused), ghosted. Writable so that a
+     * mesh change can carry it over.
+     */
+    BlockVector &
+    displacement()
+    {
+      return old_displacement;
+    }
 
     /** The ghosted solution (v, p). */
     const BlockVector &
@@ -152,7 +184,7 @@ namespace levelsinter
 
     Settings                  settings;
     const FreeRigidMotions    free_motions;
-    const PhaseLaw           &phase_law;
+    const PhaseLaw<dim>      &phase_law;
     FESystem<dim>             finite_element;
     DoFHandler<dim>           dofs;
     std::vector<IndexSet>     owned_partitioning;
@@ -170,5 +202,6 @@ namespace levelsinter
     TrilinosWrappers::SparseMatrix monolithic_matrix;
     TrilinosWrappers::MPI::Vector  monolithic_rhs;
     BlockVector                         ghosted_solution;
+    BlockVector                         old_displacement;
   };
 } // namespace levelsinter

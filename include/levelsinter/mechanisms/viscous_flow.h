@@ -33,13 +33,16 @@ namespace levelsinter
      * @p symmetry_planes: `Domain/Symmetry planes`, faces with zero normal
      * velocity. @p band_level: the refinement level of the interface band,
      * where the smoothing width E of the phases is set
-     * (TwoPhaseStokes::Settings).
+     * (TwoPhaseStokes::Settings). @p law: the particles' phase law
+     * (make_phase_law()); one with history (elastic) is refused: moving the
+     * interface with v is viscous sintering only.
      */
     ViscousFlow(const ViscousFlowParameters           &parameters,
                 const std::vector<types::boundary_id> &symmetry_planes,
                 const LevelSetFilter                  &filter,
                 const unsigned int                     band_level,
-                TimerOutput                           &timer);
+                TimerOutput                           &timer,
+                const PhaseLawParameters &law = PhaseLawParameters());
 
     std::string
     name() const override
@@ -126,7 +129,7 @@ namespace levelsinter
     const LevelSetFilter                 filter;
     const unsigned int                   band_level;
     TimerOutput                         &timer;
-    const NewtonianPhases                phases;
+    const std::unique_ptr<PhaseLaw<dim>> phases;
     std::unique_ptr<TwoPhaseStokes<dim>> operator_;
     std::unique_ptr<MixedCurvatureSolver<dim>> curvature_solver;
     std::shared_ptr<const Function<dim>>       exact_curvature;

@@ -7,6 +7,7 @@
 #include <levelsinter/scene/geometry_parameters.h>
 #include <levelsinter/scene/level_set_parameters.h>
 #include <levelsinter/scene/output_parameters.h>
+#include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/prescribed_velocity_parameters.h>
 #include <levelsinter/scene/refinement_parameters.h>
 #include <levelsinter/scene/surface_diffusion_parameters.h>
@@ -80,6 +81,7 @@ namespace levelsinter
     VolumeCorrectionParameters   volume_correction;
     OutputParameters             output;
     AnalysisParameters           analysis;
+    PhaseLawParameters           phase_law;
 
     /** Warnings for the user (deprecated entries, legitimate but unusual
      * choices); the driver prints them before the run. */

@@ -1,0 +1,116 @@
+#pragma once
+
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/mechanics/phase_law.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * What the assemblers of the two-phase Stokes operator read on one cell
+   * (the scratch of StokesAssembler): shape data and phase coefficients at
+   * the volume quadrature points, the points of the surface measure and the
+   * points on free box faces. TwoPhaseStokes fills it per cell; each
+   * assembler adds one term of Eq. 93-94 to a CellContribution.
+   */
+  template <int dim>
+  struct StokesCellData
+  {
+    /** One point of the surface measure of Gamma: unit normal, weight dS
+     * and the gradients of the velocity shape functions there. */
+    struct SurfacePoint
+    {
+      Tensor<1, dim>              normal;
+      double                      dS = 0;
+      std::vector<Tensor<2, dim>> grad_w;
+
+      /** The tangential projector I - n (x) n. */
+      Tensor<2, dim>
+      projector() const
+      {
+        return unit_symmetric_tensor<dim>() - outer_product(normal, normal);
+      }
+    };
+
+    /** One quadrature point of a free box face: outer normal, weight and
+     * the velocity shape values. */
+    struct FacePoint
+    {
+      Tensor<1, dim>              normal;
+      double                      JxW = 0;
+      std::vector<Tensor<1, dim>> w;
+    };
+
+    /** Size for @p n_dofs shape functions; @p component[i] is the vector
+     * component of shape function i (dim: pressure). */
+    explicit StokesCellData(const std::vector<unsigned int> &component);
+
+    /** Shape data from @p values (reinit on the cell); resets the surface
+     * and face points. */
+    void
+    reinit(const FEValues<dim> &values);
+
+    bool
+    is_pressure(const unsigned int i) const
+    {
+      return component[i] == dim;
+    }
+
+    const std::vector<unsigned int> component;
+    const unsigned int              n_dofs;
+    unsigned int                    n_q = 0;
+    double                          h   = 0; // cell size
+    // Cell mean of a1 (the Schur weight, doc/numerics.md).
+    double a1_cell = 0;
+
+    // Per volume quadrature point k, [k][i] per shape function i.
+    std::vector<double>                              JxW;
+    std::vector<PhaseCoefficients>                   law;
+    std::vector<double>                              tau; // ASGS, Eq. 99
+    std::vector<HistoryTerms<dim>>                   history;
+    std::vector<Tensor<1, dim>>                      balanced_force;
+    std::vector<std::vector<SymmetricTensor<2, dim>>> eps;
+    std::vector<std::vector<Tensor<2, dim>>>          grad_w;
+    std::vector<std::vector<Tensor<1, dim>>>          w;
+    std::vector<std::vector<double>>                  div;
+    std::vector<std::vector<double>>                  q;
+    std::vector<std::vector<Tensor<1, dim>>>          grad_q;
+
+    std::vector<SurfacePoint> surface;
+    std::vector<FacePoint>    free_faces;
+  };
+
+  /** A cell's share of the system matrix, the Schur approximation and the
+   * right-hand side. Same-type pairs (velocity-velocity, pressure-pressure)
+   * are filled in the upper triangle only, mirrored by symmetrise(). */
+  struct CellContribution
+  {
+    explicit CellContribution(const unsigned int n)
+      : matrix(n, n)
+      , schur(n, n)
+      , rhs(n)
+    {}
+
+    void
+    reset()
+    {
+      matrix = 0;
+      schur  = 0;
+      rhs    = 0;
+    }
+
+    FullMatrix<double> matrix;
+    FullMatrix<double> schur;
+    Vector<double>     rhs;
+  };
+} // namespace levelsinter
