@@ -153,8 +153,8 @@ namespace levelsinter
           if (same)
             {
               std::ostringstream msg;
-              msg << "entry 'Geometry/Particles' (with the particle file "
-                     "appended): particles "
+              msg << "entry 'Geometry/Particles' (inline particles first, "
+                     "then the particle file's): particles "
                   << i + 1 << " and " << j + 1 << " have the same centre (";
               for (unsigned int k = 0; k < dim; ++k)
                 msg << (k ? ", " : "") << p[k];
