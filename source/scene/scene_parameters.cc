@@ -244,9 +244,10 @@ namespace levelsinter
       {
         std::ostringstream what;
         what.precision(3);
-        what << "with Curvature refinement levels = "
-             << refinement.curvature_levels << " the mesh at t = 0 would "
-             << "hold about " << cells << " cells, about " << bytes / 1e9
+        what << "Maximum level " << refinement.max_level << " with "
+             << refinement.curvature_levels
+             << " curvature refinement levels would give a mesh of about "
+             << cells << " cells at t = 0, about " << bytes / 1e9
              << " GB at the measured " << bytes_per_cell(d)
              << " bytes per cell, more than the " << memory / 1e9
              << " GB of memory of this machine; lower the level or the "
