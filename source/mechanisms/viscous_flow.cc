@@ -43,17 +43,18 @@ namespace levelsinter
     settings.surface_tension = parameters.surface_tension;
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
     using Choice = ViscousFlowParameters::SurfaceTensionForm;
-    settings.form = parameters.surface_tension_form == Choice::csf ? Form::csf :
+    settings.form = parameters.surface_tension_form == Choice::csf ?
+                      Form::csf :
                     parameters.surface_tension_form == Choice::sharp ?
-                                                                     Form::sharp :
-                                                                     Form::csf_curvature;
+                      Form::sharp :
+                      Form::csf_curvature;
     settings.interface_half_width_cells = parameters.interface_half_width;
     settings.band_level                 = band_level;
     settings.stabilisation_constant = parameters.stabilisation_constant;
     settings.external_pressure      = parameters.external_pressure;
     settings.symmetry_boundaries    = symmetry_planes;
-    settings.direct_solver          = parameters.linear_solver ==
-                                      ViscousFlowParameters::LinearSolver::direct;
+    settings.direct_solver =
+      parameters.linear_solver == ViscousFlowParameters::LinearSolver::direct;
     settings.tolerance              = parameters.solver_tolerance;
     settings.max_iterations         = parameters.max_iterations;
     // The DoFHandler is tied to the triangulation, which the time loop
