@@ -31,21 +31,18 @@ bad_input_test(mesh_beyond_memory "GB of memory of this machine"
 
 # Two particles with the same centre.
 bad_input_test(coincident_particles "particles 1 and 3 have the same centre"
-  --set "Geometry/Particles=0.32,0.5,0.2; 0.68,0.5,0.2; 0.32,0.5,0.1"
-  ${TWO_PARTICLES})
+  ${BAD}/coincident_particles.prm)
 
-# A particle of radius 0.01 at h = 0.25 / 2^6 = 0.0039 spans 2.56 cells:
-# accepted at level 6, refused at level 5 (1.28 cells) with the level that
+# A particle smaller than 2 band cells is refused with the level that
 # resolves it.
-bad_input_test(particle_too_small "Maximum level 6 would resolve it"
-  --set "Geometry/Particles=0.32,0.5,0.2; 0.8,0.8,0.01"
-  --set "Mesh refinement/Maximum level=5"
-  ${TWO_PARTICLES})
+bad_input_test(particle_too_small "Maximum level 8 would resolve it"
+  ${BAD}/small_particle.prm)
 
 # Particle file headers: columns in any order, case and spaces ignored
-# (the two particles of the scene read back reordered: same solid area
-# 0.24661 as the inline ones, first metrics row); a header that does not
-# name them is refused with the file and line.
+# (the two particles of the scene read back reordered; measured: the same
+# first metrics row as the inline particles, 11716 cells, solid area
+# 0.246617672196); a header that does not name them is refused with the
+# file and line.
 add_test(NAME parameters_particle_header_order COMMAND levelsinter
   --set "Geometry/Particles=" --set
   "Geometry/Particle file=${CMAKE_CURRENT_SOURCE_DIR}/scenes/reordered_particles.csv"

@@ -55,7 +55,8 @@ namespace levelsinter
     write_xdmf = formats.find("xdmf") != std::string::npos;
     if (formats.find("none") != std::string::npos &&
         (write_vtu || write_xdmf))
-      fail_entry("Output/Field formats", "'none' cannot be combined with a format");
+      fail_entry("Output/Field formats",
+                 "'none' cannot be combined with a format");
     metrics_interval  = prm.get_integer("Metrics interval");
     progress_interval = prm.get_integer("Progress interval");
     if (directory.empty())

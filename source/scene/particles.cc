@@ -21,7 +21,7 @@ namespace levelsinter
                    std::vector<double>             &particle)
     {
       const unsigned int dim    = column.size() - 1;
-      const auto         fields = dealii::Utilities::split_string_list(text, ',');
+      const auto fields = dealii::Utilities::split_string_list(text, ',');
       if (fields.size() != dim + 1)
         return "expected " + std::to_string(dim + 1) + " values (" +
                (dim == 2 ? std::string("x, y, r") : "x, y, z, r") +
@@ -108,9 +108,10 @@ namespace levelsinter
             // line, other names) is refused rather than guessed.
             auto header = dealii::Utilities::split_string_list(trimmed, ',');
             for (auto &h : header)
-              std::transform(h.begin(), h.end(), h.begin(), [](unsigned char c) {
-                return std::tolower(c);
-              });
+              std::transform(h.begin(),
+                             h.end(),
+                             h.begin(),
+                             [](unsigned char c) { return std::tolower(c); });
             for (const auto &name : names)
               {
                 const auto at = std::find(header.begin(), header.end(), name);
@@ -153,8 +154,8 @@ namespace levelsinter
           if (same)
             {
               std::ostringstream msg;
-              msg << "entry 'Geometry/Particles' (with the particle file "
-                     "appended): particles "
+              msg << "entry 'Geometry/Particles' (inline particles first, "
+                     "then the particle file's): particles "
                   << i + 1 << " and " << j + 1 << " have the same centre (";
               for (unsigned int k = 0; k < dim; ++k)
                 msg << (k ? ", " : "") << p[k];

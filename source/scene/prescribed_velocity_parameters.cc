@@ -67,8 +67,9 @@ namespace levelsinter
       constant = read_coordinates(prm, "Velocity", "Constant", d);
     if (type == Type::rotation)
       {
-        rotation_centre = read_coordinates(prm, "Velocity", "Rotation centre", d);
-        rotation_axis   = read_coordinates(prm, "Velocity", "Rotation axis", 3);
+        rotation_centre =
+          read_coordinates(prm, "Velocity", "Rotation centre", d);
+        rotation_axis = read_coordinates(prm, "Velocity", "Rotation axis", 3);
       }
     angular_velocity     = prm.get_double("Angular velocity");
     expression           = prm.get("Expression");

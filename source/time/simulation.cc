@@ -317,7 +317,8 @@ namespace levelsinter
         // The neck of two particles; in a packing the smallest neck over
         // the pairs that overlap at t = 0.
         const auto &particles = scene.geometry.particles;
-        if (scene.geometry.shape == GeometryParameters::Shape::particles && particles.size() >= 2)
+        if (scene.geometry.shape == GeometryParameters::Shape::particles &&
+            particles.size() >= 2)
           {
             const double neck =
               neck_measures::smallest_neck_radius(alpha, particles);

@@ -39,6 +39,7 @@ namespace levelsinter
     for (const auto &[name, choice] : choices)
       if (name == value)
         return choice;
-    fail_entry(section + "/" + entry, "'" + value + "' is not one of the allowed values");
+    fail_entry(section + "/" + entry,
+               "'" + value + "' is not one of the allowed values");
   }
 } // namespace levelsinter
