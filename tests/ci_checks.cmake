@@ -97,7 +97,7 @@ add_test(NAME help COMMAND levelsinter --help)
 set_tests_properties(help PROPERTIES PASS_REGULAR_EXPRESSION "Usage:")
 add_test(NAME print_parameters COMMAND levelsinter --print-parameters)
 set_tests_properties(print_parameters PROPERTIES
-  PASS_REGULAR_EXPRESSION "Reinitialization strength")
+  PASS_REGULAR_EXPRESSION "Reinitialisation strength")
 bad_input_test(unknown_entry "Particle radius" ${BAD}/unknown_entry.prm)
 bad_input_test(out_of_range "Dimension" ${BAD}/out_of_range.prm)
 bad_input_test(missing_scene "cannot be opened" ${BAD}/no_such_scene.prm)

@@ -105,11 +105,11 @@ foreach(spec "3:0.1:2" "3:0.05:4" "3:0.025:8" "3:0.0125:16" "4:0.05:4"
     20000 ${k} ${r} ${interval} --set "${FINEST_REINIT}")
   list(APPEND NECKREF_SD_REL ${name})
 endforeach()
-# The same with `Solid reinitialization from band cells`: the
+# The same with `Solid reinitialisation from band cells`: the
 # level set inside the neck is rebuilt at the band's h / dt, the
 # atmosphere's wedge at the finest cell's (doc/validation.md, "Steps that
 # grow with t"); samples every 4 steps.
-set(SOLID_BAND "Level set/Solid reinitialization from band cells=true")
+set(SOLID_BAND "Level set/Solid reinitialisation from band cells=true")
 foreach(spec "5:0.1" "5:0.05" "5:0.025" "6:0.1" "6:0.05" "6:0.025")
   string(REPLACE ":" ";" spec "${spec}")
   list(GET spec 0 k)
@@ -137,8 +137,8 @@ foreach(spec "0.1:2:0.04:rel0.1_reinit_double:20000"
   add_neckref_relative_run(study_neckref_sd_two_grains_k5_${name}_2d
     neckref_sd_two_grains_k5_${name}.csv ${steps} 5 ${r} ${interval}
     --set "${FINEST_REINIT}"
-    --set "Level set/Reinitialization strength=${r}"
-    --set "Level set/Reinitialization diffusion=${diffusion}")
+    --set "Level set/Reinitialisation strength=${r}"
+    --set "Level set/Reinitialisation diffusion=${diffusion}")
   list(APPEND NECKREF_SD_REL study_neckref_sd_two_grains_k5_${name}_2d)
 endforeach()
 add_test(NAME study_neckref_sd_two_grains_k3_cfl1_2d

@@ -136,7 +136,7 @@ set_tests_properties(study_sd_sphere_E12h_3d study_sd_sphere_vc_h16_3d
 # h = 1/256 with the reinitialisation off or without remeshing, each with
 # both bands; the band at 0.8 E for n = 3, 4 and for wider filters.
 set(E047 --filter-thickness 0.047)
-set(NO_REINIT "Level set/Reinitialization strength=0")
+set(NO_REINIT "Level set/Reinitialisation strength=0")
 set(NO_REMESH "Mesh refinement/Adapt interval=1000")
 add_test(NAME study_mullins_band08E_dt_2d COMMAND ${SD_VALIDATE} mullins
   ${PERTURBED} 5 10,20,40,80,160,320 --band-width 0.0375

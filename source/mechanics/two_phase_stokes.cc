@@ -555,7 +555,7 @@ namespace levelsinter
                     << e.last_step << " iterations (residual "
                     << e.last_residual / system_rhs.l2_norm()
                     << "); raise 'Viscous flow/Maximum solver iterations' "
-                    << "or use 'Solver = direct' for a small 2D scene";
+                    << "or use 'Linear solver = direct' for a small 2D scene";
             throw std::runtime_error(message.str());
           }
         iterations = control.last_step();
