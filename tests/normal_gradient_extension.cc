@@ -10,8 +10,10 @@
 // component of a Q1^dim x Q1 system:
 //   linear  p = x                 xi = n_x         (exact along the normals)
 //   radial  p = r^2               xi = 2 R
-//   mode2   p = (x^2 - y^2)       xi = 2 R cos 2 theta on the equator
-// (r, x, y about the centre). With --jump J the pressure also jumps by J
+//   mode2   p = x^2 - y^2         xi = 2 R cos 2 theta on the equator
+//   cubic   p = x^3 - 3 x y^2     xi = 3 R^2 cos 3 theta on the equator
+// (r, x, y about the centre). --constant 1: the paper's constant extension
+// instead of the linear extrapolation. With --jump J the pressure also jumps by J
 // across the interface, smeared over 1.5 h like the CSF Laplace jump
 // (doc/numerics.md): xi must not see it. Prints the error of xi on the
 // discrete zero level set (cut-cell quadrature), max and surface RMS,
@@ -95,6 +97,8 @@ namespace
       return x[0];
     if (field == "radial")
       return r.norm_square();
+    if (field == "cubic")
+      return r[0] * r[0] * r[0] - 3 * r[0] * r[1] * r[1];
     return r[0] * r[0] - r[1] * r[1]; // mode2
   }
 
@@ -108,6 +112,11 @@ namespace
       g[0] = 1;
     else if (field == "radial")
       g = 2 * r;
+    else if (field == "cubic")
+      {
+        g[0] = 3 * (r[0] * r[0] - r[1] * r[1]);
+        g[1] = -6 * r[0] * r[1];
+      }
     else
       {
         g[0] = 2 * r[0];
@@ -228,6 +237,7 @@ namespace
       const unsigned int             level,
       const double                   offset,
       const double                   jump,
+      const bool                     constant,
       const double                   bar = 0)
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
@@ -259,7 +269,8 @@ namespace
     TimerOutput timer(comm, std::cout, TimerOutput::never,
                       TimerOutput::wall_times);
     typename NormalGradientExtension<dim>::Settings settings;
-    settings.interior_offset = offset;
+    settings.interior_offset      = offset;
+    settings.linear_extrapolation = !constant;
     NormalGradientExtension<dim> extension(filter, settings, timer);
     extension.setup(level_set);
     Result result;
@@ -350,15 +361,22 @@ namespace
     std::vector<double> rms;
     if (root)
       std::cout << dim << "D, p = " << field << ", lambda = " << offset
-                << " h, jump " << jump << "\n"
+                << " h, jump " << jump
+                << (option(options, "constant", 0) > 0 ? ", constant" : "")
+                << "\n"
                 << " level  R/h   max error   rms error  order  unsourced"
                    "  GMRES\n";
     if (csv && root)
       *csv << "level,max_error,rms_error,unsourced\n";
     for (const unsigned int level : levels)
       {
-        const Result r = run<dim>(
-          field, {centre<dim>()}, radius, level, offset, jump);
+        const Result r = run<dim>(field,
+                                  {centre<dim>()},
+                                  radius,
+                                  level,
+                                  offset,
+                                  jump,
+                                  option(options, "constant", 0) > 0);
         rms.push_back(r.rms_error);
         const double order =
           rms.size() > 1 ? std::log2(rms[rms.size() - 2] / rms.back()) : 0;
@@ -412,6 +430,7 @@ namespace
                             level,
                             option(options, "offset", 3),
                             0,
+                            option(options, "constant", 0) > 0,
                             0.04);
     if (root)
       std::cout << "two discs joined by a bar 0.08 thick, h = 1/" << (1 << level)

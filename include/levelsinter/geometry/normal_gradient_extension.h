@@ -36,8 +36,11 @@ namespace levelsinter
    * offset` x h_K for every cell K at the node (the derivation of the
    * default is in doc/numerics.md, "Volume diffusion"). The values are
    * carried outwards along N across the interface and to the band's outer
-   * edge; the interface then sees grad p . N taken lambda deeper, a
-   * first-order error -lambda d(xi)/dn (doc/numerics.md).
+   * edge. Carried as they are (Eq. 111), the interface sees grad p . N
+   * taken lambda deeper, a first-order error -lambda d(xi)/dn; with
+   * linear extrapolation the normal derivative eta of the source values
+   * is carried too and xi = (g - d eta) + d eta along each characteristic
+   * (Aslam 2004), second order (doc/numerics.md).
    *
    * Where the solid is thinner than about 2 lambda (a young neck), no
    * characteristic from the interface reaches a source node. A weak
@@ -55,6 +58,10 @@ namespace levelsinter
     {
       // lambda in cell sizes h_K (edge length) of the cells around a node.
       double       interior_offset = 3;
+      // Carry g - d eta and eta = d g / dn along N and add them up as
+      // xi = (g - d eta) + d eta at each node (linear extrapolation, second
+      // order), or g alone (the paper's constant extension, first order).
+      bool         linear_extrapolation = true;
       // Normals from the distance filter^-1(alpha) (second order in h).
       bool         normals_from_distance = true;
       double       solver_tolerance      = 1e-10;
@@ -126,15 +133,26 @@ namespace levelsinter
     }
 
   private:
-    // Marks the source nodes and their values grad p . N; the rest of the
-    // nodes get 0 in @p values.
+    // Marks the source nodes, their nodal grad p in @p gradient and
+    // g = grad p . N in @p values; the other nodes get 0.
     void
     compute_sources(const LevelSetField<dim> &level_set,
                     const DoFHandler<dim>    &field_dofs,
                     const unsigned int        component,
                     const Vector             &field,
                     Vector                   &is_source,
-                    Vector                   &values);
+                    Vector                   &values,
+                    std::array<Vector, dim>  &gradient);
+
+    // At the source nodes, the normal derivative eta = dg/dn from the cells
+    // whose vertices are all sources, and g - d eta in @p values, d the
+    // distance; source nodes without such a cell stop being sources.
+    void
+    compute_slopes(const LevelSetField<dim>      &level_set,
+                   const std::array<Vector, dim> &gradient,
+                   Vector                        &is_source,
+                   Vector                        &values,
+                   Vector                        &slopes) const;
 
     void
     assemble(const LevelSetField<dim> &level_set, const Vector &is_source);
