@@ -7,6 +7,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/geometry/normal_gradient_extension.h>
 #include <levelsinter/level_set/same_cell.h>
@@ -31,22 +32,6 @@ namespace levelsinter
     // Nodes with r below this fraction of the decay over the offset itself
     // count as not reached.
     constexpr double reached_fraction = 0.5;
-
-    // Cells whose vertices all lie where the filter has slope > 0.3
-    // (|d| < 0.8 E for the sine filter): alpha and N carry the geometry
-    // there, beyond it the level set saturates (as in the curvature band).
-    template <int dim>
-    bool
-    in_band(const LevelSetFilter                                 &filter,
-            const LevelSetField<dim>                             &level_set,
-            const typename DoFHandler<dim>::active_cell_iterator &cell)
-    {
-      for (const unsigned int v : cell->vertex_indices())
-        if (filter.gradient_norm_target(
-              level_set.alpha()(cell->vertex_dof_index(v, 0))) < 0.3)
-          return false;
-      return true;
-    }
   } // namespace
 
   template <int dim>
@@ -265,7 +250,7 @@ namespace levelsinter
     std::vector<double> advective(n), test(n);
 
     for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned() && in_band(filter, level_set, cell))
+      if (cell->is_locally_owned() && in_geometry_band(filter, level_set, cell))
         {
           fe_values.reinit(cell);
           for (unsigned int c = 0; c < dim; ++c)
