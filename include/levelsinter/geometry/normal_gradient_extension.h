@@ -43,8 +43,10 @@ namespace levelsinter
    * (Aslam 2004), second order (doc/numerics.md).
    *
    * Where the solid is thinner than about 2 lambda (a young neck), no
-   * characteristic from the interface reaches a source node. A weak
-   * reaction term makes xi decay to 0 there (no volume-diffusion speed
+   * characteristic from the interface reaches a source node. A reaction
+   * term keeps the system regular there, a second solve with data 1 (the
+   * reach) tells those nodes apart and divides the reaction's decay out
+   * elsewhere; xi = 0 where nothing is reached (no volume-diffusion speed
    * where it cannot be measured), and unsourced_interface_cells() counts
    * the interface cells concerned so that the caller can warn.
    */
@@ -117,7 +119,7 @@ namespace levelsinter
     /**
      * Interface cells (alpha changes sign) with a vertex that no
      * characteristic from a source node reaches (all ranks): where the
-     * solid is too thin for the offset lambda, xi is set to ~0.
+     * solid is too thin for the offset lambda, xi is set to 0.
      */
     unsigned int
     unsourced_interface_cells() const
