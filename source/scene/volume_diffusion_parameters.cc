@@ -64,6 +64,13 @@ namespace levelsinter
                         "only at nodes deeper than lambda in the solid, "
                         "clear of the smeared pressure jump, and carried "
                         "out to the interface along n (doc/numerics.md).");
+      prm.declare_entry("Extrapolation",
+                        "linear",
+                        Patterns::Selection("linear|constant"),
+                        "How grad p . n read lambda inside reaches the "
+                        "interface: linear (with its normal derivative, "
+                        "second order in h) or constant (Eq. 111 as in the "
+                        "paper, an O(lambda) error).");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -91,6 +98,7 @@ namespace levelsinter
     time_unit        = prm.get("Time unit");
     reference_radius = prm.get_double("Reference radius");
     interior_offset  = prm.get_double("Interior offset");
+    linear_extrapolation = prm.get("Extrapolation") == "linear";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     prm.leave_subsection();

@@ -46,6 +46,7 @@ namespace levelsinter
     std::string  time_unit        = "seconds"; // or "reduced"
     double       reference_radius = 0;         // R of t*
     double       interior_offset  = 3;         // lambda in cells (Eq. 110)
+    bool         linear_extrapolation = true;  // or constant (Eq. 111)
     double       solver_tolerance = 1e-10;
     unsigned int max_iterations   = 1000;
   };
