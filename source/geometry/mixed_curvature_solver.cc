@@ -13,6 +13,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/mixed_curvature_solver.h>
 #include <levelsinter/geometry/nodal_normals.h>
 
@@ -143,14 +144,7 @@ namespace levelsinter
     const LevelSetField<dim>                             &level_set,
     const typename DoFHandler<dim>::active_cell_iterator &cell) const
   {
-    // Cells whose every vertex is where the filter still has slope > 0.3,
-    // i.e. |d| < 0.8 E: alpha carries the geometry there. Beyond, alpha
-    // saturates and the normal is undefined.
-    for (const unsigned int v : cell->vertex_indices())
-      if (filter.gradient_norm_target(
-            level_set.alpha()(cell->vertex_dof_index(v, 0))) < 0.3)
-        return false;
-    return true;
+    return in_geometry_band(filter, level_set, cell);
   }
 
   template <int dim>

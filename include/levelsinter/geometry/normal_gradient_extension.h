@@ -1,0 +1,172 @@
+#pragma once
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/timer.h>
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
+
+#include <array>
+#include <vector>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The normal pressure gradient xi on the interface (paper Eq. 110-111),
+   * Q1 on the level set's DoFs:
+   *
+   *   xi = grad p . N      at the nodes deeper than lambda in the solid,
+   *   N . grad xi = 0      elsewhere in the band (SUPG, Eq. 72-73),
+   *
+   * N the nodal unit normals of Eq. 84 (nodal_normals(), from the distance):
+   * continuous, so the extension follows well-defined characteristics, and
+   * the same N that carries the velocity v = -C_v xi N of Eq. 112. The
+   * pressure is discontinuous across the interface (Laplace's jump, smeared
+   * over a few cells by the continuous approximation and the ASGS
+   * stabilisation), so its gradient is only read where every cell around a
+   * node lies clear of that smear: d < -lambda with lambda = `interior
+   * offset` x h_K for every cell K at the node (the derivation of the
+   * default is in doc/numerics.md, "Volume diffusion"). The values are
+   * carried outwards along N across the interface and to the band's outer
+   * edge. Carried as they are (Eq. 111), the interface sees grad p . N
+   * taken lambda deeper, a first-order error -lambda d(xi)/dn; with
+   * linear extrapolation the normal derivative eta of the source values
+   * is carried too and xi = (g - d eta) + d eta along each characteristic
+   * (Aslam 2004), second order (doc/numerics.md).
+   *
+   * Where the solid is thinner than about 2 lambda (a young neck), no
+   * characteristic from the interface reaches a source node. A reaction
+   * term keeps the system regular there, a second solve with data 1 (the
+   * reach) tells those nodes apart and divides the reaction's decay out
+   * elsewhere; xi = 0 where nothing is reached (no volume-diffusion speed
+   * where it cannot be measured), and unsourced_interface_cells() counts
+   * the interface cells concerned so that the caller can warn.
+   */
+  template <int dim>
+  class NormalGradientExtension
+  {
+  public:
+    using Vector = TrilinosWrappers::MPI::Vector;
+
+    struct Settings
+    {
+      // lambda in cell sizes h_K (edge length) of the cells around a node.
+      double       interior_offset = 3;
+      // Carry g - d eta and eta = d g / dn along N and add them up as
+      // xi = (g - d eta) + d eta at each node (linear extrapolation, second
+      // order), or g alone (the paper's constant extension, first order).
+      bool         linear_extrapolation = true;
+      // Normals from the distance filter^-1(alpha) (second order in h).
+      bool         normals_from_distance = true;
+      double       solver_tolerance      = 1e-10;
+      unsigned int max_iterations        = 1000;
+      // Box faces across which the level set continues as its mirror image.
+      std::vector<types::boundary_id> symmetry_boundaries;
+    };
+
+    NormalGradientExtension(const LevelSetFilter &filter,
+                            const Settings       &settings,
+                            TimerOutput          &timer);
+
+    /** Size the matrix for the level set's DoFs; after each remesh. */
+    void
+    setup(const LevelSetField<dim> &level_set);
+
+    /**
+     * Compute xi for the pressure given as component @p component of the
+     * finite-element field @p field (ghosted) on @p field_dofs, a
+     * DoFHandler on the level set's triangulation (e.g. component dim of
+     * the Q1^dim x Q1 Stokes system). Returns the GMRES iterations; throws
+     * std::runtime_error if the solver fails or no node lies deeper than
+     * lambda in the solid.
+     */
+    unsigned int
+    solve(const LevelSetField<dim> &level_set,
+          const DoFHandler<dim>    &field_dofs,
+          const unsigned int        component,
+          const Vector             &field);
+
+    /** xi (ghosted) on the level set's DoFs. */
+    const Vector &
+    normal_gradient() const
+    {
+      return xi;
+    }
+
+    /** The nodal unit normals N used (Eq. 84), one ghosted vector per axis. */
+    const std::array<Vector, dim> &
+    nodal_normals() const
+    {
+      return normals;
+    }
+
+    /**
+     * The volume-diffusion velocity -C_v xi_i N_i (Eq. 112) at the level-set
+     * DoF @p i (locally relevant), for the coefficient C_v of
+     * VolumeDiffusionParameters.
+     */
+    Tensor<1, dim>
+    velocity(const types::global_dof_index i, const double coefficient) const;
+
+    /**
+     * Interface cells (alpha changes sign) with a vertex that no
+     * characteristic from a source node reaches (all ranks): where the
+     * solid is too thin for the offset lambda, xi is set to 0.
+     */
+    unsigned int
+    unsourced_interface_cells() const
+    {
+      return unsourced_cells;
+    }
+
+    /** Source nodes (d < -lambda) in the last solve (all ranks). */
+    types::global_dof_index
+    source_nodes() const
+    {
+      return n_sources;
+    }
+
+  private:
+    // Marks the source nodes, their nodal grad p in @p gradient and
+    // g = grad p . N in @p values; the other nodes get 0.
+    void
+    compute_sources(const LevelSetField<dim> &level_set,
+                    const DoFHandler<dim>    &field_dofs,
+                    const unsigned int        component,
+                    const Vector             &field,
+                    Vector                   &is_source,
+                    Vector                   &values,
+                    std::array<Vector, dim>  &gradient);
+
+    // At the source nodes, the normal derivative eta = dg/dn from the cells
+    // whose vertices are all sources, and g - d eta in @p values, d the
+    // distance; source nodes without such a cell stop being sources.
+    void
+    compute_slopes(const LevelSetField<dim>      &level_set,
+                   const std::array<Vector, dim> &gradient,
+                   Vector                        &is_source,
+                   Vector                        &values,
+                   Vector                        &slopes) const;
+
+    void
+    assemble(const LevelSetField<dim> &level_set, const Vector &is_source);
+
+    const LevelSetFilter              filter;
+    const Settings                    settings;
+    TimerOutput                      &timer;
+    TrilinosWrappers::SparseMatrix    matrix;
+    TrilinosWrappers::PreconditionILU preconditioner;
+    std::array<Vector, dim>           normals;
+    Vector                            xi;
+    unsigned int                      unsourced_cells = 0;
+    types::global_dof_index           n_sources       = 0;
+  };
+} // namespace levelsinter

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The `Volume diffusion` subsection of a scene: the interface moves with
+   * v = -C_v (grad p . n) n (paper Eq. 112), p the pressure of the elastic
+   * solid under surface tension, C_v = (1 - f) Omega D_v / kT (Eq. 25 and
+   * 32; why one factor (1 - f) and not two: doc/numerics.md, "Volume
+   * diffusion").
+   */
+  struct VolumeDiffusionParameters
+  {
+    static void
+    declare(ParameterHandler &prm);
+
+    /** Read and check; throws std::runtime_error naming the entry. */
+    void
+    parse(ParameterHandler &prm);
+
+    /** C_v [m^4/(N s)]: the given coefficient or (1 - f) Omega D_v / kT. */
+    double
+    mobility() const;
+
+    /**
+     * The C_v of Eq. 112 in the scene's time unit: C_v in seconds; in the
+     * reduced time t* = C_v gamma t / R^3 the speed per unit t* is
+     * -(R^3 / gamma) dp/dn, so R^3 / gamma, with gamma the surface energy
+     * of the mechanics.
+     */
+    double
+    coefficient_in_time_unit(const double surface_energy) const;
+
+    bool         enabled          = false;
+    double       coefficient      = 0; // C_v; 0: from the material entries
+    double       diffusivity      = 0; // D_v [m^2/s]
+    double       atomic_volume    = 0; // Omega [m^3]
+    double       vacancy_fraction = 0; // f: vacancy volume / Omega
+    double       thermal_energy   = 0; // kT [J]
+    enum class TimeUnit
+    {
+      seconds,
+      reduced // t* = C_v gamma t / R^3
+    } time_unit = TimeUnit::seconds;
+    double       reference_radius = 0;         // R of t*
+    double       interior_offset  = 3;         // lambda in cells (Eq. 110)
+    bool         linear_extrapolation = true;  // or constant (Eq. 111)
+    double       solver_tolerance = 1e-10;
+    unsigned int max_iterations   = 1000;
+  };
+} // namespace levelsinter

@@ -1,0 +1,143 @@
+#include <levelsinter/scene/parameter_entries.h>
+#include <levelsinter/scene/volume_diffusion_parameters.h>
+
+#include <utility>
+#include <vector>
+
+namespace levelsinter
+{
+  namespace
+  {
+    [[noreturn]] void
+    fail(const std::string &entry, const std::string &message)
+    {
+      fail_entry("Volume diffusion/" + entry, message);
+    }
+  } // namespace
+
+  void
+  VolumeDiffusionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Volume diffusion");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Move the interface by volume (lattice) diffusion, "
+                        "v = -C_v (grad p . n) n (paper Eq. 112), p the "
+                        "pressure of the elastic solid under surface "
+                        "tension.");
+      prm.declare_entry("Coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "C_v [m^4/(N s)]. 0: computed as (1 - f) Omega D_v "
+                        "/ kT from the four entries below.");
+      // The material entries of C_v = (1 - f) Omega D_v / kT.
+      for (const auto &[name, documentation] :
+           std::vector<std::pair<std::string, std::string>>{
+             {"Volume diffusivity", "D_v [m^2/s]."},
+             {"Atomic volume", "Omega [m^3]."},
+             {"Thermal energy", "kT [J]."}})
+        prm.declare_entry(name, "0", Patterns::Double(0), documentation);
+      prm.declare_entry("Vacancy volume fraction",
+                        "0",
+                        Patterns::Double(0, 1),
+                        "f: the volume of a vacancy as a fraction of Omega "
+                        "(Eq. 10), 0 <= f < 1.");
+      prm.declare_entry("Time unit",
+                        "seconds",
+                        Patterns::Selection("seconds|reduced"),
+                        "Unit of Time/End time and Time/Time step: seconds, "
+                        "or the reduced time t* = C_v gamma t / R^3 with "
+                        "gamma the surface energy and R the reference "
+                        "radius.");
+      prm.declare_entry("Reference radius",
+                        "0",
+                        Patterns::Double(0),
+                        "R of the reduced time t* (needed when Time unit = "
+                        "reduced).");
+      prm.declare_entry("Interior offset",
+                        "3",
+                        Patterns::Double(0),
+                        "lambda of Eq. 110 in cell sizes: grad p . n is read "
+                        "only at nodes deeper than lambda in the solid, "
+                        "clear of the smeared pressure jump, and carried "
+                        "out to the interface along n (doc/numerics.md).");
+      prm.declare_entry("Extrapolation",
+                        "linear",
+                        Patterns::Selection("linear|constant"),
+                        "How grad p . n read lambda inside reaches the "
+                        "interface: linear (with its normal derivative, "
+                        "second order in h) or constant (Eq. 111 as in the "
+                        "paper, an O(lambda) error).");
+      prm.declare_entry("Solver tolerance",
+                        "1e-10",
+                        Patterns::Double(0),
+                        "Relative residual of the extension solve (GMRES "
+                        "with ILU).");
+      prm.declare_entry("Maximum solver iterations",
+                        "1000",
+                        Patterns::Integer(1),
+                        "GMRES iteration limit of the extension solve; "
+                        "reaching it stops the run.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  VolumeDiffusionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Volume diffusion");
+    enabled          = prm.get_bool("Enabled");
+    coefficient      = prm.get_double("Coefficient");
+    diffusivity      = prm.get_double("Volume diffusivity");
+    atomic_volume    = prm.get_double("Atomic volume");
+    thermal_energy   = prm.get_double("Thermal energy");
+    vacancy_fraction = prm.get_double("Vacancy volume fraction");
+    time_unit        = read_selection<TimeUnit>(prm,
+                                         "Volume diffusion",
+                                         "Time unit",
+                                         {{"seconds", TimeUnit::seconds},
+                                          {"reduced", TimeUnit::reduced}});
+    reference_radius = prm.get_double("Reference radius");
+    interior_offset  = prm.get_double("Interior offset");
+    linear_extrapolation = prm.get("Extrapolation") == "linear";
+    solver_tolerance = prm.get_double("Solver tolerance");
+    max_iterations   = prm.get_integer("Maximum solver iterations");
+    prm.leave_subsection();
+
+    if (!enabled)
+      return;
+    if (coefficient == 0 && thermal_energy == 0)
+      fail("Coefficient",
+           "give C_v or the material entries (Thermal energy is 0)");
+    if (vacancy_fraction >= 1)
+      fail("Vacancy volume fraction", "must be below 1");
+    if (!(mobility() > 0))
+      fail("Coefficient",
+           "C_v = (1 - f) Omega D_v / kT must be positive");
+    if (time_unit == TimeUnit::reduced && reference_radius == 0)
+      fail("Reference radius", "must be positive when Time unit = reduced");
+    if (interior_offset <= 0)
+      fail("Interior offset", "must be positive");
+  }
+
+  double
+  VolumeDiffusionParameters::mobility() const
+  {
+    if (coefficient > 0)
+      return coefficient;
+    return (1 - vacancy_fraction) * atomic_volume * diffusivity /
+           thermal_energy;
+  }
+
+  double
+  VolumeDiffusionParameters::coefficient_in_time_unit(
+    const double surface_energy) const
+  {
+    if (time_unit == TimeUnit::reduced)
+      return reference_radius * reference_radius * reference_radius /
+             surface_energy;
+    return mobility();
+  }
+} // namespace levelsinter
