@@ -265,7 +265,7 @@ namespace
     const study::Options options = study::parse_options(args, 7);
     SceneParameters scene;
     scene.dimension       = dim;
-    scene.geometry.shape  = "particles";
+    scene.geometry.shape  = GeometryParameters::Shape::particles;
     scene.domain.lower_corner = std::vector<double>(dim, 0.);
     scene.domain.upper_corner = std::vector<double>(dim, 1.);
     for (unsigned int k = 0; k < std::pow(n, dim); ++k)
