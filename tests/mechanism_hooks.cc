@@ -235,41 +235,41 @@ namespace
     if (!diffusion)
       throw std::runtime_error("the scene has no surface diffusion");
 
-    bool                    ok = true;
-    unsigned int            adapted_steps = 0;
-    types::global_dof_index dofs_before   = 0;
+    bool         ok            = true;
+    unsigned int adapted_steps = 0;
+    bool         adapted       = false;
+    // Adaptations of the time loop, not the initial refinement.
+    simulation.initialise();
+    simulation.triangulation().signals.post_distributed_refinement.connect(
+      [&]() { adapted = true; });
     simulation.set_step_observer(
       [&](const unsigned int step, double, const LevelSetField<2> &alpha) {
-        const auto n_dofs = alpha.dof_handler().n_dofs();
-        if (step > 1 && n_dofs != dofs_before)
+        if (!adapted)
+          return;
+        // This step solved with the transferred v_s^{n-1}.
+        adapted = false;
+        ++adapted_steps;
+        const auto &lagged = diffusion->lagged_velocity();
+        const auto &v_s    = diffusion->geometry().normal_velocity();
+        const auto  n_dofs = alpha.dof_handler().n_dofs();
+        double      change = -1;
+        if (lagged.size() == n_dofs)
           {
-            // The step after an adaptation solved with the transferred
-            // v_s^{n-1}.
-            ++adapted_steps;
-            const auto &lagged = diffusion->lagged_velocity();
-            const auto &v_s    = diffusion->geometry().normal_velocity();
-            const bool  sized  = lagged.size() == n_dofs;
-            double      change = -1;
-            if (sized)
-              {
-                TrilinosWrappers::MPI::Vector difference(
-                  alpha.locally_owned(), alpha.dof_handler().get_communicator());
-                difference = lagged;
-                TrilinosWrappers::MPI::Vector current(difference);
-                current = v_s;
-                difference -= current;
-                change = difference.l2_norm() / current.l2_norm();
-              }
-            if (root)
-              std::cout << "step " << step << ": " << n_dofs
-                        << " DoFs after adaptation, |v_s^{n-1} - v_s^n| / "
-                           "|v_s^n| = "
-                        << change << std::endl;
-            ok &= check("v_s^{n-1} kept at step " + std::to_string(step),
-                        sized && change >= 0 &&
-                          change < option(args, "--max-lag-change"));
+            TrilinosWrappers::MPI::Vector difference(
+              alpha.locally_owned(), alpha.dof_handler().get_communicator());
+            difference = lagged;
+            TrilinosWrappers::MPI::Vector current(difference);
+            current = v_s;
+            difference -= current;
+            change = difference.l2_norm() / current.l2_norm();
           }
-        dofs_before = n_dofs;
+        if (root)
+          std::cout << "step " << step << ": " << n_dofs
+                    << " DoFs after adaptation, |v_s^{n-1} - v_s^n| / "
+                       "|v_s^n| = "
+                    << change << std::endl;
+        ok &= check("v_s^{n-1} kept at step " + std::to_string(step),
+                    change >= 0 && change < option(args, "--max-lag-change"));
       });
     simulation.run();
     ok &= check("at least one adaptation changed the mesh", adapted_steps > 0);
@@ -297,7 +297,11 @@ namespace
       }
     // ... and these are its values: the same DataOut fields, read back from
     // the patches.
-    DataOut<2> data_out;
+    // get_dataset_names() is what the writers use to label the patches.
+    struct NamedDataOut : DataOut<2>
+    {
+      using DataOut<2>::get_dataset_names;
+    } data_out;
     data_out.attach_triangulation(simulation.triangulation());
     simulation.add_output_fields(data_out);
     data_out.build_patches();

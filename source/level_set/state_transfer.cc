@@ -15,10 +15,9 @@ namespace levelsinter
                           const std::vector<Vector *> &vectors)
   {
     for (const Vector *v : vectors)
-      if (v->size() != dof_handler.n_dofs() || !v->has_ghost_elements())
+      if (v->size() != dof_handler.n_dofs())
         throw std::logic_error(
-          "StateTransfer::add: each vector must be ghosted and sized to its "
-          "DoFHandler");
+          "StateTransfer::add: a vector is not sized to its DoFHandler");
     auto entry = std::find_if(entries.begin(),
                               entries.end(),
                               [&](const Entry &e) {
