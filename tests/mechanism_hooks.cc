@@ -45,6 +45,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -347,24 +348,19 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const std::map<std::string, bool (*)(const std::vector<std::string> &)>
+             modes = {{"transfer", run_transfer},
+                      {"lagged", run_lagged},
+                      {"bubble", run_bubble}};
+  const auto mode = argc > 1 ? modes.find(argv[1]) : modes.end();
+  root            = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   try
     {
-      const std::vector<std::string> all(argv + 1, argv + argc);
-      if (all.empty())
-        throw std::runtime_error("usage: mechanism_hooks transfer|lagged|bubble ...");
-      const std::vector<std::string> args(all.begin() + 1, all.end());
-      bool ok = false;
-      if (all[0] == "transfer")
-        ok = run_transfer(args);
-      else if (all[0] == "lagged")
-        ok = run_lagged(args);
-      else if (all[0] == "bubble")
-        ok = run_bubble(args);
-      else
-        throw std::runtime_error("unknown mode '" + all[0] +
-                                 "': transfer, lagged or bubble");
-      return ok ? 0 : 1;
+      if (mode == modes.end())
+        throw std::runtime_error(
+          "usage: mechanism_hooks transfer|lagged|bubble ARGS (see the head "
+          "of mechanism_hooks.cc)");
+      return mode->second({argv + 2, argv + argc}) ? 0 : 1;
     }
   catch (const std::exception &e)
     {
