@@ -3,15 +3,15 @@
 //   mechanism_hooks transfer MIN_LEVEL [MIN_LEVEL ...] --min-order-q1 P
 //                            --min-order-q2 P
 //     A smooth field on two DoFHandlers (the level set's Q1 and a vector Q2
-//     of its own) is kept by StateTransfer through four adaptations that
+//     of its own) is kept by StateTransfer through eight adaptations that
 //     move a refined ring across a square with base level MIN_LEVEL; the
 //     largest nodal error against the field's interpolant on the final
 //     mesh must fall with the orders of interpolation (2 and 3) between
 //     the levels.
-//   mechanism_hooks lagged SCENE.prm STEPS [--set ENTRY=VALUE ...]
+//   mechanism_hooks lagged SCENE.prm STEPS --max-lag-change C [--set ...]
 //     A surface-diffusion run: after every step that followed an
-//     adaptation, v_s^{n-1} must be there, on the new DoFs, and close to the
-//     v_s of the step.
+//     adaptation, v_s^{n-1} must be there, on the new DoFs, and within
+//     |v_s^{n-1} - v_s^n| <= C |v_s^n| of the v_s of the step.
 //   mechanism_hooks bubble SCENE.prm --max-jump-error E [--set ...]
 //     The static bubble: the pressure written by the field output (the same
 //     DataOut fields, read back from its patches) jumps by gamma / R.
@@ -95,7 +95,7 @@ namespace
     return Utilities::MPI::max(error, dofs.get_communicator());
   }
 
-  // Errors (Q1 scalar, Q2 vector) after four adaptations from level L.
+  // Errors (Q1 scalar, Q2 vector) after eight adaptations from level L.
   std::pair<double, double>
   transfer_errors(const unsigned int min_level)
   {
