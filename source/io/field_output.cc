@@ -1,8 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/numerics/data_out.h>
-
 #include <levelsinter/io/field_output.h>
 
 #include <cstdio>
@@ -21,10 +19,12 @@ namespace levelsinter
 
   template <int dim>
   void
-  FieldOutput<dim>::write(const unsigned int,
-                          const double              time,
-                          const LevelSetField<dim> &level_set,
-                          const VelocityField<dim> &velocity)
+  FieldOutput<dim>::write(
+    const unsigned int,
+    const double                               time,
+    const LevelSetField<dim>                  &level_set,
+    const VelocityField<dim>                  &velocity,
+    const std::function<void(DataOut<dim> &)> &add_fields)
   {
     if (!write_vtu && !write_xdmf)
       return;
@@ -42,6 +42,7 @@ namespace levelsinter
                              velocity.values(),
                              names,
                              interpretation);
+    add_fields(data_out);
     dealii::Vector<float> level(tria.n_active_cells());
     dealii::Vector<float> rank(tria.n_active_cells());
     for (const auto &cell : tria.active_cell_iterators())

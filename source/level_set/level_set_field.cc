@@ -1,5 +1,3 @@
-#include <deal.II/distributed/solution_transfer.h>
-
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/lac/sparsity_tools.h>
@@ -7,6 +5,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/state_transfer.h>
 
 namespace levelsinter
 {
@@ -72,22 +71,11 @@ namespace levelsinter
 
   template <int dim>
   void
-  LevelSetField<dim>::prepare_for_refinement()
+  LevelSetField<dim>::add_to(StateTransfer<dim> &transfer)
   {
-    transfer = std::make_unique<
-      parallel::distributed::SolutionTransfer<dim, Vector, dim>>(dofs);
-    transfer->prepare_for_coarsening_and_refinement(ghosted_alpha);
-  }
-
-  template <int dim>
-  void
-  LevelSetField<dim>::transfer_after_refinement()
-  {
-    setup_dofs();
-    Vector owned(owned_dofs, dofs.get_communicator());
-    transfer->interpolate(owned);
-    transfer.reset();
-    set_from_owned(owned);
+    // setup_dofs() sets the state id to 0 (not cached) until the next
+    // set_from_owned().
+    transfer.add(dofs, {&ghosted_alpha});
   }
 
   template class LevelSetField<2>;

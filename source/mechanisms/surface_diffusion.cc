@@ -36,10 +36,37 @@ namespace levelsinter
   SurfaceDiffusion<dim>::setup(const LevelSetField<dim> &alpha)
   {
     solver.setup(alpha);
-    // v_s^{n-1} lives on the old mesh; A^n falls back to |grad d| for the
-    // first step after a remesh (a second-order change in kappa).
-    previous_velocity.clear();
+    // After a mesh change the state transfer fills previous_velocity next,
+    // and the first solve on the new mesh must keep it.
     solved_time = -1;
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::add_state(const LevelSetField<dim> &alpha,
+                                   StateTransfer<dim>       &transfer)
+  {
+    // The next step starts a new time level: the last solve's v_s is its
+    // v_s^{n-1}. Without a solve on this mesh the lagged one stays.
+    if (solved_time >= 0)
+      previous_velocity = solver.normal_velocity();
+    if (previous_velocity.size() > 0)
+      transfer.add(alpha.dof_handler(), {&previous_velocity});
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::add_output_fields(const LevelSetField<dim> &alpha,
+                                          DataOut<dim> &data_out) const
+  {
+    // Both on the level set's DoFs.
+    const auto &dofs = alpha.dof_handler();
+    data_out.add_data_vector(dofs,
+                             solver.curvature(),
+                             "surface_diffusion_curvature");
+    data_out.add_data_vector(dofs,
+                             solver.normal_velocity(),
+                             "surface_diffusion_v_s");
   }
 
   template <int dim>

@@ -151,6 +151,27 @@ namespace levelsinter
 
   template <int dim>
   void
+  ViscousFlow<dim>::add_output_fields(const LevelSetField<dim> &alpha,
+                                      DataOut<dim>             &data_out) const
+  {
+    std::vector<std::string> names(dim, "viscous_flow_velocity");
+    names.emplace_back("viscous_flow_pressure");
+    std::vector<DataComponentInterpretation::DataComponentInterpretation>
+      interpretation(dim,
+                     DataComponentInterpretation::component_is_part_of_vector);
+    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+    data_out.add_data_vector(operator_->dof_handler(),
+                             operator_->solution(),
+                             names,
+                             interpretation);
+    if (kappa.size() > 0)
+      data_out.add_data_vector(alpha.dof_handler(),
+                               kappa,
+                               "viscous_flow_curvature");
+  }
+
+  template <int dim>
+  void
   ViscousFlow<dim>::check_step(const LevelSetField<dim> &alpha)
   {
     if (measures_at_step_start.interface_area == 0)

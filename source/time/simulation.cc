@@ -159,24 +159,43 @@ namespace levelsinter
   void
   Simulation<dim>::adapt_mesh()
   {
+    // alpha and the mechanisms' history, each on its own DoFHandler.
+    StateTransfer<dim> state;
     {
       TimerOutput::Scope scope(timer_output, "mesh adaptation");
       if (!band_refinement.mark_cells(tria, alpha))
         return;
-      alpha.prepare_for_refinement();
+      alpha.add_to(state);
+      for (auto &mechanism : mechanisms)
+        mechanism->add_state(alpha, state);
+      state.prepare_for_coarsening_and_refinement();
       tria.execute_coarsening_and_refinement();
-      alpha.transfer_after_refinement();
+      alpha.setup_dofs();
     }
-    // Reported apart: on large meshes building the sparsity patterns and
-    // matrices costs more than refining and transferring.
-    TimerOutput::Scope scope(timer_output, "system setup after adaptation");
-    velocity.setup_dofs();
-    correction_velocity.setup_dofs();
-    for (auto &mechanism : mechanisms)
-      mechanism->setup(alpha);
-    transport.setup_system(alpha);
+    {
+      // Reported apart: on large meshes building the sparsity patterns and
+      // matrices costs more than refining and transferring.
+      TimerOutput::Scope scope(timer_output, "system setup after adaptation");
+      velocity.setup_dofs();
+      correction_velocity.setup_dofs();
+      for (auto &mechanism : mechanisms)
+        mechanism->setup(alpha);
+      transport.setup_system(alpha);
+    }
+    {
+      TimerOutput::Scope scope(timer_output, "mesh adaptation");
+      state.interpolate();
+    }
     // Curvature refinement makes the finest cells come and go with the necks.
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::add_output_fields(DataOut<dim> &data_out) const
+  {
+    for (const auto &mechanism : mechanisms)
+      mechanism->add_output_fields(alpha, data_out);
   }
 
   template <int dim>
@@ -375,7 +394,13 @@ namespace levelsinter
          step % scene.output.field_interval == 0))
       {
         TimerOutput::Scope scope(timer_output, "output");
-        field_output.write(step, t, alpha, velocity);
+        field_output.write(step,
+                           t,
+                           alpha,
+                           velocity,
+                           [this](DataOut<dim> &data_out) {
+                             add_output_fields(data_out);
+                           });
       }
 
     if ((scene.output.progress_interval > 0 &&

@@ -2,9 +2,12 @@
 
 #include <deal.II/base/data_out_base.h>
 
+#include <deal.II/numerics/data_out.h>
+
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/velocity_field.h>
 
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -12,8 +15,9 @@
 namespace levelsinter
 {
   /**
-   * Writes alpha, the velocity, the refinement level and the owning MPI rank
-   * as a ParaView series: fields_NNNNN.pvtu/.vtu listed in fields.pvd, and/or
+   * Writes alpha, the velocity, the refinement level, the owning MPI rank
+   * and the fields of the model's parts (the mechanisms) as a ParaView
+   * series: fields_NNNNN.pvtu/.vtu listed in fields.pvd, and/or
    * fields_NNNNN.h5 listed in fields.xdmf. The index files are rewritten
    * after every output so that a run that stops early stays readable.
    */
@@ -25,11 +29,16 @@ namespace levelsinter
                 const bool         write_vtu,
                 const bool         write_xdmf);
 
+    /**
+     * @p add_fields adds further fields to the DataOut, which has the level
+     * set's DoFHandler attached: each vector on another DoFHandler names it.
+     */
     void
-    write(const unsigned int        step,
-          const double              time,
-          const LevelSetField<dim> &level_set,
-          const VelocityField<dim> &velocity);
+    write(const unsigned int                               step,
+          const double                                     time,
+          const LevelSetField<dim>                        &level_set,
+          const VelocityField<dim>                        &velocity,
+          const std::function<void(DataOut<dim> &)> &add_fields);
 
   private:
     std::string                              directory;

@@ -13,17 +13,13 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <cstdint>
-#include <memory>
-
-namespace dealii::parallel::distributed
-{
-  template <int dim, typename VectorType, int spacedim>
-  class SolutionTransfer;
-}
 
 namespace levelsinter
 {
   using namespace dealii;
+
+  template <int dim>
+  class StateTransfer;
 
   /**
    * The discrete filtered level set alpha_h: Q1 on the distributed mesh,
@@ -48,13 +44,12 @@ namespace levelsinter
     void
     interpolate(const Function<dim> &filtered_level_set);
 
-    /** Call before refinement is executed; pairs with transfer_after(). */
+    /**
+     * Keep alpha across the next mesh change: after it, setup_dofs() comes
+     * before StateTransfer::interpolate().
+     */
     void
-    prepare_for_refinement();
-
-    /** After refinement: setup_dofs() and move alpha to the new mesh. */
-    void
-    transfer_after_refinement();
+    add_to(StateTransfer<dim> &transfer);
 
     /**
      * The sparsity pattern of a matrix on these DoFs with these
@@ -124,8 +119,5 @@ namespace levelsinter
     IndexSet                  relevant_dofs;
     Vector                    ghosted_alpha;
     std::uint64_t             state = 0;
-    std::unique_ptr<
-      parallel::distributed::SolutionTransfer<dim, Vector, dim>>
-      transfer;
   };
 } // namespace levelsinter

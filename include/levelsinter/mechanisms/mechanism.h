@@ -1,6 +1,9 @@
 #pragma once
 
+#include <deal.II/numerics/data_out.h>
+
 #include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/state_transfer.h>
 #include <levelsinter/level_set/velocity_field.h>
 
 #include <limits>
@@ -26,9 +29,35 @@ namespace levelsinter
     virtual std::string
     name() const = 0;
 
-    /** The mesh changed (or t = 0): size matrices and vectors. */
+    /**
+     * The mesh changed (or t = 0): size matrices and vectors, and distribute
+     * the DoFs of the mechanism's own DoFHandlers again (the same objects
+     * given to add_state(): their vectors are filled after this call).
+     */
     virtual void
     setup(const LevelSetField<dim> &alpha) = 0;
+
+    /**
+     * Hand to @p transfer the vectors that must survive a mesh change (a
+     * lagged velocity, a displacement or stress history), ghosted, on any
+     * DoFHandler of the triangulation. The time loop calls it before
+     * adapting the mesh; after setup() the transfer fills them on the new
+     * mesh (StateTransfer).
+     */
+    virtual void
+    add_state(const LevelSetField<dim> &, StateTransfer<dim> &)
+    {}
+
+    /**
+     * Add the mechanism's fields (on any DoFHandler of the triangulation,
+     * each add_data_vector() naming its DoFHandler) to the field output.
+     * Names start with the mechanism's, so that they stay apart when
+     * several mechanisms are on; the vectors must live until the output is
+     * written.
+     */
+    virtual void
+    add_output_fields(const LevelSetField<dim> &, DataOut<dim> &) const
+    {}
 
     /**
      * Add this mechanism's velocity for the step t -> t + dt, computed from

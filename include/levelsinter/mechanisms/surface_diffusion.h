@@ -44,6 +44,16 @@ namespace levelsinter
       return true;
     }
 
+    /** The v_s of the last solve becomes v_s^{n-1} on the new mesh. */
+    void
+    add_state(const LevelSetField<dim> &alpha,
+              StateTransfer<dim>       &transfer) override;
+
+    /** kappa and v_s of the last solve. */
+    void
+    add_output_fields(const LevelSetField<dim> &alpha,
+                      DataOut<dim>             &data_out) const override;
+
     std::vector<std::string>
     metric_names() const override;
 
@@ -57,6 +67,16 @@ namespace levelsinter
       return solver;
     }
 
+    /**
+     * v_s^{n-1}, the lagged velocity of A^n (Eq. 81) the next step uses;
+     * empty before the first step.
+     */
+    const TrilinosWrappers::MPI::Vector &
+    lagged_velocity() const
+    {
+      return previous_velocity;
+    }
+
     /** The coefficient of Delta_s kappa in the time unit of the scene. */
     double
     coefficient() const
@@ -68,9 +88,10 @@ namespace levelsinter
     const double              mobility;
     MixedCurvatureSolver<dim> solver;
     TimerOutput              &timer;
-    // v_s^{n-1} for A^n (Eq. 81), and the time of the last solve: the time
-    // loop may ask twice for the same t (step-size retry), and then the
-    // previous step's v_s must still be the lagged one.
+    // v_s^{n-1} for A^n (Eq. 81), and the time of the last solve on this
+    // mesh (-1: none): the time loop may ask twice for the same t
+    // (step-size retry), and then the previous step's v_s must still be the
+    // lagged one.
     TrilinosWrappers::MPI::Vector previous_velocity;
     double                        solved_time = -1;
     unsigned int                  iterations  = 0;

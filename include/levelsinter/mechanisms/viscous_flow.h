@@ -82,6 +82,14 @@ namespace levelsinter
     void
     check_step(const LevelSetField<dim> &alpha) override;
 
+    /**
+     * The last Stokes solution (velocity and pressure) and, in the
+     * csf-curvature form, the curvature it used.
+     */
+    void
+    add_output_fields(const LevelSetField<dim> &alpha,
+                      DataOut<dim>             &data_out) const override;
+
     std::vector<std::string>
     metric_names() const override
     {

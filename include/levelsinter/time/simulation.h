@@ -120,6 +120,21 @@ namespace levelsinter
       return tria;
     }
 
+    /**
+     * Add the mechanisms' fields (Mechanism::add_output_fields()) to
+     * @p data_out: what the field output writes besides alpha and the
+     * velocity, for tests that read them without files.
+     */
+    void
+    add_output_fields(DataOut<dim> &data_out) const;
+
+    /** The scene's mechanisms, in the order their velocities are summed. */
+    const std::vector<std::unique_ptr<Mechanism<dim>>> &
+    scene_mechanisms() const
+    {
+      return mechanisms;
+    }
+
     /** Wall time per phase (assembly, solve, adaptation, metrics, output). */
     TimerOutput &
     timer()

@@ -1,0 +1,85 @@
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/lac/affine_constraints.h>
+
+#include <levelsinter/level_set/state_transfer.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  template <int dim>
+  void
+  StateTransfer<dim>::add(const DoFHandler<dim>       &dof_handler,
+                          const std::vector<Vector *> &vectors)
+  {
+    for (const Vector *v : vectors)
+      if (v->size() != dof_handler.n_dofs())
+        throw std::logic_error(
+          "StateTransfer::add: a vector is not sized to its DoFHandler");
+    auto entry = std::find_if(entries.begin(),
+                              entries.end(),
+                              [&](const Entry &e) {
+                                return e.dof_handler == &dof_handler;
+                              });
+    if (entry == entries.end())
+      entries.push_back({&dof_handler, vectors, nullptr});
+    else
+      entry->vectors.insert(entry->vectors.end(),
+                            vectors.begin(),
+                            vectors.end());
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::prepare_for_coarsening_and_refinement()
+  {
+    for (Entry &entry : entries)
+      {
+        entry.transfer = std::make_unique<
+          parallel::distributed::SolutionTransfer<dim, Vector>>(
+          *entry.dof_handler);
+        const std::vector<const Vector *> in(entry.vectors.begin(),
+                                             entry.vectors.end());
+        entry.transfer->prepare_for_coarsening_and_refinement(in);
+      }
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::interpolate()
+  {
+    for (Entry &entry : entries)
+      {
+        const DoFHandler<dim> &dofs     = *entry.dof_handler;
+        const MPI_Comm         comm     = dofs.get_communicator();
+        const IndexSet        &owned    = dofs.locally_owned_dofs();
+        const IndexSet         relevant =
+          DoFTools::extract_locally_relevant_dofs(dofs);
+        AffineConstraints<double> hanging_nodes(relevant);
+        DoFTools::make_hanging_node_constraints(dofs, hanging_nodes);
+        hanging_nodes.close();
+
+        // SolutionTransfer writes owned-only vectors.
+        std::vector<Vector>   owned_vectors(entry.vectors.size());
+        std::vector<Vector *> out;
+        for (Vector &v : owned_vectors)
+          {
+            v.reinit(owned, comm);
+            out.push_back(&v);
+          }
+        entry.transfer->interpolate(out);
+        for (unsigned int i = 0; i < out.size(); ++i)
+          {
+            hanging_nodes.distribute(owned_vectors[i]);
+            entry.vectors[i]->reinit(owned, relevant, comm);
+            *entry.vectors[i] = owned_vectors[i];
+          }
+        entry.transfer.reset();
+      }
+  }
+
+  template class StateTransfer<2>;
+  template class StateTransfer<3>;
+} // namespace levelsinter
