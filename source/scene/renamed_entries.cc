@@ -89,6 +89,10 @@ namespace levelsinter
         at_path(prm, r.old_path, [&](const std::string &entry) {
           value = prm.get(entry);
         });
+        // Empty is the declared default: what a file of effective values
+        // (parameters.prm, --print-parameters) lists for a deprecated entry.
+        if (value.empty())
+          continue;
         try
           {
             at_path(prm, r.new_path, [&](const std::string &entry) {
