@@ -50,6 +50,42 @@ namespace levelsinter
   void
   StateTransfer<dim>::interpolate()
   {
+    fill_vectors([](Entry &entry, std::vector<Vector *> &out) {
+      entry.transfer->interpolate(out);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::prepare_for_serialization()
+  {
+    for (Entry &entry : entries)
+      {
+        entry.transfer = std::make_unique<
+          parallel::distributed::SolutionTransfer<dim, Vector>>(
+          *entry.dof_handler);
+        const std::vector<const Vector *> in(entry.vectors.begin(),
+                                             entry.vectors.end());
+        entry.transfer->prepare_for_serialization(in);
+      }
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::deserialize()
+  {
+    fill_vectors([](Entry &entry, std::vector<Vector *> &out) {
+      parallel::distributed::SolutionTransfer<dim, Vector> transfer(
+        *entry.dof_handler);
+      transfer.deserialize(out);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::fill_vectors(
+    const std::function<void(Entry &, std::vector<Vector *> &)> &fill)
+  {
     for (Entry &entry : entries)
       {
         const DoFHandler<dim> &dofs     = *entry.dof_handler;
@@ -69,7 +105,7 @@ namespace levelsinter
             v.reinit(owned, comm);
             out.push_back(&v);
           }
-        entry.transfer->interpolate(out);
+        fill(entry, out);
         for (unsigned int i = 0; i < out.size(); ++i)
           {
             hanging_nodes.distribute(owned_vectors[i]);

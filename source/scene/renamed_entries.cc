@@ -89,6 +89,9 @@ namespace levelsinter
         at_path(prm, r.old_path, [&](const std::string &entry) {
           value = prm.get(entry);
         });
+        // parameters.prm lists the deprecated entries empty: nothing given.
+        if (value.empty())
+          continue;
         try
           {
             at_path(prm, r.new_path, [&](const std::string &entry) {

@@ -1,0 +1,38 @@
+# --- Checkpoint and restart (issue 16) -------------------------------------
+# The circle translation to t = 0.15 (36 steps), a checkpoint every 5 steps:
+# run uninterrupted; run again, kill it with SIGKILL once
+# checkpoints/step_000010 exists, resume it with --resume; the two
+# metrics.csv must agree. Never compared: wall_time (a clock) and
+# volume_change (solid_volume minus its initial value, relative: a
+# difference of nearly equal numbers; solid_volume itself is compared).
+# Nor transport_iterations: the resumed run agrees with the uninterrupted
+# one to the transport's solver tolerance (1e-10), not bit for bit (the
+# cause of the 1e-10 is not pinned down), and a GMRES count can then differ
+# by one (measured 9 vs 8 at step 13). Same rank count: measured largest
+# relative difference 3.9e-10 (1 -> 1) and 3.4e-10 (2 -> 2); limit 1e-8. A
+# lost state (alpha, the CFL speed, the step or time) moves the columns by
+# 1e-3 or more. 1 -> 2: the band refinement marks a few cells differently
+# on 2 ranks than on 1 (an uninterrupted 2-rank run has 1954 cells at step
+# 4 against 1942 on 1 rank), so cells and dofs are not compared either; the
+# other columns differ by 7.8e-9 (measured), as the uninterrupted 1- and
+# 2-rank runs do (8.2e-9): limit 1e-7.
+set(RESTART_SCENE_ARGS
+  --set "Time/End time=0.15"
+  --set "Output/Checkpoint interval=5"
+  --set "Output/Field interval=5"
+  --set "Output/Progress interval=0")
+set(RESTART_IGNORED wall_time,volume_change,transport_iterations)
+foreach(case IN ITEMS "1;1;1e-8;${RESTART_IGNORED}"
+    "2;2;1e-8;${RESTART_IGNORED}" "1;2;1e-7;${RESTART_IGNORED},cells,dofs")
+  list(GET case 0 first)
+  list(GET case 1 resume)
+  list(GET case 2 tolerance)
+  list(GET case 3 ignored)
+  string(REPLACE "," ";" ignored "${ignored}")
+  add_test(NAME restart_circle_translation_np${first}_np${resume}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_test.sh
+    $<TARGET_FILE:levelsinter> $<TARGET_FILE:compare_metrics> ${MPIRUN}
+    "${MPIRUN_FLAGS}" ${SCENE} ${first} ${resume}
+    ${CMAKE_CURRENT_BINARY_DIR}/restart_np${first}_np${resume} ${tolerance}
+    "${ignored}" ${RESTART_SCENE_ARGS})
+endforeach()
