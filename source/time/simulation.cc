@@ -213,6 +213,14 @@ namespace levelsinter
   void
   Simulation<dim>::resume(const std::string &checkpoint_folder)
   {
+    if (scene.analysis.enabled(scene.geometry.shape,
+                               scene.geometry.particles.size()))
+      throw std::runtime_error(
+        "--resume: a checkpoint does not hold the packing analysis' state "
+        "(its pore tracking and shrinkage reference start at t = 0), and "
+        "this scene has it ('Analysis/Packing analysis', auto: on for two "
+        "or more particles). Runs to be resumed need 'Analysis/Packing "
+        "analysis = false'.");
     // Triangulation::load() wants the coarse mesh of the run.
     make_box_mesh(tria, scene.domain);
     tria.load(checkpoint_folder + "/mesh");
