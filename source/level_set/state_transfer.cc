@@ -35,15 +35,9 @@ namespace levelsinter
   void
   StateTransfer<dim>::prepare_for_coarsening_and_refinement()
   {
-    for (Entry &entry : entries)
-      {
-        entry.transfer = std::make_unique<
-          parallel::distributed::SolutionTransfer<dim, Vector>>(
-          *entry.dof_handler);
-        const std::vector<const Vector *> in(entry.vectors.begin(),
-                                             entry.vectors.end());
-        entry.transfer->prepare_for_coarsening_and_refinement(in);
-      }
+    attach([](Transfer &transfer, const std::vector<const Vector *> &in) {
+      transfer.prepare_for_coarsening_and_refinement(in);
+    });
   }
 
   template <int dim>
@@ -59,14 +53,23 @@ namespace levelsinter
   void
   StateTransfer<dim>::prepare_for_serialization()
   {
+    attach([](Transfer &transfer, const std::vector<const Vector *> &in) {
+      transfer.prepare_for_serialization(in);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::attach(
+    const std::function<void(Transfer &, const std::vector<const Vector *> &)>
+      &prepare)
+  {
     for (Entry &entry : entries)
       {
-        entry.transfer = std::make_unique<
-          parallel::distributed::SolutionTransfer<dim, Vector>>(
-          *entry.dof_handler);
+        entry.transfer = std::make_unique<Transfer>(*entry.dof_handler);
         const std::vector<const Vector *> in(entry.vectors.begin(),
                                              entry.vectors.end());
-        entry.transfer->prepare_for_serialization(in);
+        prepare(*entry.transfer, in);
       }
   }
 
@@ -75,8 +78,7 @@ namespace levelsinter
   StateTransfer<dim>::deserialize()
   {
     fill_vectors([](Entry &entry, std::vector<Vector *> &out) {
-      parallel::distributed::SolutionTransfer<dim, Vector> transfer(
-        *entry.dof_handler);
+      Transfer transfer(*entry.dof_handler);
       transfer.deserialize(out);
     });
   }

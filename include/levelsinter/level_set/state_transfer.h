@@ -67,14 +67,20 @@ namespace levelsinter
     deserialize();
 
   private:
+    using Transfer = parallel::distributed::SolutionTransfer<dim, Vector>;
     struct Entry
     {
-      const DoFHandler<dim> *dof_handler;
-      std::vector<Vector *>  vectors;
-      std::unique_ptr<parallel::distributed::SolutionTransfer<dim, Vector>>
-        transfer;
+      const DoFHandler<dim>    *dof_handler;
+      std::vector<Vector *>     vectors;
+      std::unique_ptr<Transfer> transfer;
     };
     std::vector<Entry> entries;
+
+    // One SolutionTransfer per entry, given its vectors by @p prepare.
+    void
+    attach(const std::function<void(Transfer &,
+                                    const std::vector<const Vector *> &)>
+             &prepare);
 
     // Fill the entries' vectors, ghosted and with hanging nodes distributed,
     // from owned-only vectors that @p fill writes (interpolate or
