@@ -56,3 +56,7 @@ restart_test(restart_two_grains_sd_np1_np1 ${TWO_GRAINS} 1 1 1e-7
   "${RESTART_SD_IGNORED}" ${RESTART_SD_ARGS})
 restart_test(restart_two_grains_sd_np1_np2 ${TWO_GRAINS} 1 2 1e-6
   "${RESTART_SD_IGNORED};cells;dofs" ${RESTART_SD_ARGS})
+# --resume takes the scene from the run directory, and needs a run there.
+bad_input_test(resume_with_scene "give no scene file" --resume out ${SCENE})
+bad_input_test(resume_no_run "resume_nowhere/parameters.prm"
+  --resume resume_nowhere)
