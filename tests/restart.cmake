@@ -60,3 +60,8 @@ restart_test(restart_two_grains_sd_np1_np2 ${TWO_GRAINS} 1 2 1e-6
 bad_input_test(resume_with_scene "give no scene file" --resume out ${SCENE})
 bad_input_test(resume_no_run "resume_nowhere/parameters.prm"
   --resume resume_nowhere)
+# Output/Checkpoint minutes: 1e-6 min (60 us) asks for a checkpoint after
+# every step but the last (13 steps); the folder must then hold the
+# newest two only.
+add_test(NAME restart_checkpoint_minutes_keeps_two COMMAND bash -c
+  "rm -rf restart_minutes && $<TARGET_FILE:levelsinter> --set 'Output/Directory=restart_minutes' --set 'Output/Checkpoint minutes=1e-6' --set 'Time/End time=0.05' --set 'Output/Field formats=none' ${SCENE} > /dev/null && ls restart_minutes/checkpoints && test \"$(ls restart_minutes/checkpoints)\" = \"$(printf 'step_000011\\nstep_000012')\"")

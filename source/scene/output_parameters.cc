@@ -48,6 +48,12 @@ namespace levelsinter
                         "write one anyway). The last two are kept; "
                         "'levelsinter --resume Directory' continues from "
                         "the newest.");
+      prm.declare_entry("Checkpoint minutes",
+                        "0",
+                        Patterns::Double(0),
+                        "Also write a checkpoint when this many wall-clock "
+                        "minutes have passed since the last one (0 = "
+                        "never).");
     }
     prm.leave_subsection();
   }
@@ -68,6 +74,7 @@ namespace levelsinter
     metrics_interval  = prm.get_integer("Metrics interval");
     progress_interval = prm.get_integer("Progress interval");
     checkpoint_interval = prm.get_integer("Checkpoint interval");
+    checkpoint_minutes  = prm.get_double("Checkpoint minutes");
     if (directory.empty())
       fail_entry("Output/Directory", "must not be empty");
     prm.leave_subsection();

@@ -199,6 +199,7 @@ namespace levelsinter
       }
     const std::string final_folder =
       checkpoint::commit(scene.output.directory, step, comm);
+    last_checkpoint = std::chrono::steady_clock::now();
     const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
         .count();
@@ -207,6 +208,24 @@ namespace levelsinter
             << std::setprecision(3)
             << checkpoint::size(final_folder) / 1048576. << " MiB in "
             << seconds << " s" << std::endl;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::checkpoint_due(const unsigned int step) const
+  {
+    if (scene.output.checkpoint_interval > 0 &&
+        step % scene.output.checkpoint_interval == 0)
+      return true;
+    if (scene.output.checkpoint_minutes == 0)
+      return false;
+    // The slowest rank's clock, so that all ranks decide alike.
+    const double seconds = Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                    last_checkpoint)
+        .count(),
+      comm);
+    return seconds >= 60 * scene.output.checkpoint_minutes;
   }
 
   template <int dim>
@@ -582,6 +601,7 @@ namespace levelsinter
   Simulation<dim>::run()
   {
     start                  = std::chrono::steady_clock::now();
+    last_checkpoint        = start;
     // CPU time summed over the ranks: unlike the wall time it does not grow
     // when other jobs share the cores.
     const Timer cpu_timer(comm);
@@ -637,8 +657,7 @@ namespace levelsinter
         record(step, t, dt, finished || signal != 0);
         if (step_observer)
           step_observer(step, t, alpha);
-        if (signal != 0 || (!finished && scene.output.checkpoint_interval > 0 &&
-                            step % scene.output.checkpoint_interval == 0))
+        if (signal != 0 || (!finished && checkpoint_due(step)))
           write_checkpoint(step, t);
         if (signal != 0)
           {

@@ -170,6 +170,9 @@ namespace levelsinter
     correct_step(const double dt);
     double
     take_step(const double t);
+    // By Output/Checkpoint interval or minutes (collective).
+    bool
+    checkpoint_due(const unsigned int step) const;
     void
     write_checkpoint(const unsigned int step, const double t);
     // Both directions of the checkpoint's counters (boost archives).
@@ -216,6 +219,7 @@ namespace levelsinter
     double                                    first_time = 0;
     std::optional<unsigned int>               kept_metrics_rows;
     std::chrono::steady_clock::time_point     start;
+    std::chrono::steady_clock::time_point     last_checkpoint;
     RemainingTime                             remaining_time;
     std::function<void(unsigned int, double, const LevelSetField<dim> &)>
       step_observer;
