@@ -2,6 +2,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <levelsinter/io/checkpoint.h>
 #include <levelsinter/io/run_directory.h>
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
@@ -93,11 +94,17 @@ namespace
         }
       try
         {
-          run_directory::prepare(scene.output.directory, overwrite, comm);
-          run_directory::write_parameters(scene.output.directory,
-                                          record,
-                                          parameters,
-                                          comm);
+          // A resumed run continues the directory's files.
+          if (command_line.resume_directory.empty())
+            {
+              run_directory::prepare(scene.output.directory, overwrite, comm);
+              run_directory::write_parameters(scene.output.directory,
+                                              record,
+                                              parameters,
+                                              comm);
+            }
+          else
+            simulation->resume(checkpoint::newest(scene.output.directory));
           started            = true;
           const auto summary = simulation->run();
           stop_signal        = summary.stop_signal;

@@ -59,9 +59,11 @@ namespace levelsinter
         for (const auto &entry : fs::directory_iterator(directory, ec))
           {
             const std::string name = entry.path().filename();
-            if (!entry.is_regular_file())
+            if (entry.is_directory() && name == "checkpoints")
+              named.push_back(name);
+            else if (!entry.is_regular_file())
               continue;
-            if (is_field_file(name))
+            else if (is_field_file(name))
               ++n_field_files;
             else if (std::find(named_files.begin(),
                                named_files.end(),
@@ -88,9 +90,13 @@ namespace levelsinter
                    "subsection Output";
           }
         for (const auto &path : earlier)
-          if (!fs::remove(path, ec) && ec)
-            return "cannot remove '" + path.string() +
-                   "' of the earlier run: " + ec.message();
+          {
+            // checkpoints/ is a folder.
+            fs::remove_all(path, ec);
+            if (ec)
+              return "cannot remove '" + path.string() +
+                     "' of the earlier run: " + ec.message();
+          }
         return "";
       }
 

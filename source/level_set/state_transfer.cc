@@ -35,20 +35,58 @@ namespace levelsinter
   void
   StateTransfer<dim>::prepare_for_coarsening_and_refinement()
   {
-    for (Entry &entry : entries)
-      {
-        entry.transfer = std::make_unique<
-          parallel::distributed::SolutionTransfer<dim, Vector>>(
-          *entry.dof_handler);
-        const std::vector<const Vector *> in(entry.vectors.begin(),
-                                             entry.vectors.end());
-        entry.transfer->prepare_for_coarsening_and_refinement(in);
-      }
+    attach([](Transfer &transfer, const std::vector<const Vector *> &in) {
+      transfer.prepare_for_coarsening_and_refinement(in);
+    });
   }
 
   template <int dim>
   void
   StateTransfer<dim>::interpolate()
+  {
+    fill_vectors([](Entry &entry, std::vector<Vector *> &out) {
+      entry.transfer->interpolate(out);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::prepare_for_serialization()
+  {
+    attach([](Transfer &transfer, const std::vector<const Vector *> &in) {
+      transfer.prepare_for_serialization(in);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::attach(
+    const std::function<void(Transfer &, const std::vector<const Vector *> &)>
+      &prepare)
+  {
+    for (Entry &entry : entries)
+      {
+        entry.transfer = std::make_unique<Transfer>(*entry.dof_handler);
+        const std::vector<const Vector *> in(entry.vectors.begin(),
+                                             entry.vectors.end());
+        prepare(*entry.transfer, in);
+      }
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::deserialize()
+  {
+    fill_vectors([](Entry &entry, std::vector<Vector *> &out) {
+      Transfer transfer(*entry.dof_handler);
+      transfer.deserialize(out);
+    });
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::fill_vectors(
+    const std::function<void(Entry &, std::vector<Vector *> &)> &fill)
   {
     for (Entry &entry : entries)
       {
@@ -69,7 +107,7 @@ namespace levelsinter
             v.reinit(owned, comm);
             out.push_back(&v);
           }
-        entry.transfer->interpolate(out);
+        fill(entry, out);
         for (unsigned int i = 0; i < out.size(); ++i)
           {
             hanging_nodes.distribute(owned_vectors[i]);

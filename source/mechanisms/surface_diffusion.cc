@@ -50,8 +50,12 @@ namespace levelsinter
     // v_s^{n-1}. Without a solve on this mesh the lagged one stays.
     if (solved_time >= 0)
       previous_velocity = solver.normal_velocity();
-    if (previous_velocity.size() > 0)
-      transfer.add(alpha.dof_handler(), {&previous_velocity});
+    else if (previous_velocity.size() != alpha.dof_handler().n_dofs())
+      // A restart: the checkpoint's v_s^{n-1} is read into it.
+      previous_velocity.reinit(alpha.locally_owned(),
+                               alpha.locally_relevant(),
+                               alpha.dof_handler().get_communicator());
+    transfer.add(alpha.dof_handler(), {&previous_velocity});
   }
 
   template <int dim>

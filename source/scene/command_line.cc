@@ -68,6 +68,9 @@ namespace levelsinter
            "  levelsinter [--overwrite] [--set \"Section/entry=value\"]... "
            "SCENE.prm\n"
            "  mpirun -np N levelsinter SCENE.prm\n"
+           "  levelsinter --resume OUTPUT_DIRECTORY [--set ...]...\n"
+           "                     continue a run from its newest checkpoint "
+           "(any number of ranks)\n"
            "  levelsinter --print-parameters [--set ...]... [SCENE.prm]\n"
            "                     every entry with its effective value (the "
            "defaults without a scene)\n"
@@ -87,7 +90,7 @@ namespace levelsinter
            "Output/Overwrite = true)\n"
            "is given; then the earlier run's files are removed first.\n"
            "SIGINT or SIGTERM stops the run after the current step (exit "
-           "code 130 or 143).\n";
+           "code 130 or 143), writing a checkpoint first.\n";
   }
 
   CommandLine
@@ -105,6 +108,13 @@ namespace levelsinter
           cl.action = Action::print_parameters;
         else if (arg == "--overwrite")
           cl.overwrite = true;
+        else if (arg == "--resume")
+          {
+            if (i + 1 >= argc)
+              throw std::runtime_error(
+                "--resume needs the output directory of the run");
+            cl.resume_directory = argv[++i];
+          }
         else if (arg == "--set")
           {
             if (i + 1 >= argc)
@@ -131,6 +141,17 @@ namespace levelsinter
         else
           throw std::runtime_error("more than one scene file given: '" +
                                    cl.scene_file + "' and '" + arg + "'");
+      }
+    if (!cl.resume_directory.empty())
+      {
+        if (!cl.scene_file.empty())
+          throw std::runtime_error(
+            "--resume reads the scene from OUTPUT_DIRECTORY/parameters.prm; "
+            "give no scene file with it");
+        cl.scene_file = cl.resume_directory + "/parameters.prm";
+        // Where the run is, wherever it was started from.
+        cl.overrides.insert(cl.overrides.begin(),
+                            {"Output/Directory", cl.resume_directory});
       }
     if (cl.action == Action::run && cl.scene_file.empty())
       throw std::runtime_error("no scene file given (see levelsinter --help)");

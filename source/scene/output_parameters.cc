@@ -40,6 +40,20 @@ namespace levelsinter
                         Patterns::Integer(0),
                         "Print a progress line every this many steps (0 = "
                         "never).");
+      prm.declare_entry("Checkpoint interval",
+                        "0",
+                        Patterns::Integer(0),
+                        "Write a checkpoint to Directory/checkpoints every "
+                        "this many steps (0 = never; SIGINT and SIGTERM "
+                        "write one anyway). The last two are kept; "
+                        "'levelsinter --resume Directory' continues from "
+                        "the newest.");
+      prm.declare_entry("Checkpoint minutes",
+                        "0",
+                        Patterns::Double(0),
+                        "Also write a checkpoint when this many wall-clock "
+                        "minutes have passed since the last one (0 = "
+                        "never).");
     }
     prm.leave_subsection();
   }
@@ -59,6 +73,8 @@ namespace levelsinter
                  "'none' cannot be combined with a format");
     metrics_interval  = prm.get_integer("Metrics interval");
     progress_interval = prm.get_integer("Progress interval");
+    checkpoint_interval = prm.get_integer("Checkpoint interval");
+    checkpoint_minutes  = prm.get_double("Checkpoint minutes");
     if (directory.empty())
       fail_entry("Output/Directory", "must not be empty");
     prm.leave_subsection();

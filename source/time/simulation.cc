@@ -9,12 +9,17 @@
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/grid/box_mesh.h>
+#include <levelsinter/io/checkpoint.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
+
+#include <boost/archive/text_iarchive.hpp>
+#include <boost/archive/text_oarchive.hpp>
 
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <fstream>
 #include <iomanip>
 #include <sstream>
 #include <stdexcept>
@@ -143,6 +148,120 @@ namespace levelsinter
       mechanism->setup(alpha);
     transport.setup_system(alpha);
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    initialised = true;
+  }
+
+  template <int dim>
+  template <class Archive>
+  void
+  Simulation<dim>::archive_counters(Archive      &archive,
+                                    unsigned int &step,
+                                    double       &t)
+  {
+    // The step size comes from t and the last interface speed; the rest
+    // continues metrics.csv, the field series and the summary.
+    unsigned int metrics_rows = metrics ? metrics->n_rows() : 0;
+    archive &step &t &interface_speed &total_iterations &last_iterations;
+    archive &under_resolved_cells &resolved_again_reported;
+    archive &summary.max_cells &summary.max_dofs &summary.rejected_steps;
+    archive &summary.initial_solid_volume
+      &summary.curvature_under_resolved_until;
+    archive &metrics_rows &field_output;
+    if (Archive::is_loading::value)
+      kept_metrics_rows = metrics_rows;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::write_checkpoint(const unsigned int step, const double t)
+  {
+    TimerOutput::Scope scope(timer_output, "checkpoint");
+    const auto         begin = std::chrono::steady_clock::now();
+    const std::string  folder =
+      checkpoint::begin(scene.output.directory, step, comm);
+    // alpha and the mechanisms' history, in the order resume() reads them.
+    StateTransfer<dim> state;
+    alpha.add_to(state);
+    for (auto &mechanism : mechanisms)
+      mechanism->add_state(alpha, state);
+    state.prepare_for_serialization();
+    tria.save(folder + "/mesh");
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::ofstream                 out(folder + "/counters.txt");
+        boost::archive::text_oarchive archive(out);
+        unsigned int                  s    = step;
+        double                        time = t;
+        archive_counters(archive, s, time);
+        if (!out)
+          throw std::runtime_error("cannot write '" + folder +
+                                   "/counters.txt'");
+      }
+    const std::string final_folder =
+      checkpoint::commit(scene.output.directory, step, comm);
+    last_checkpoint = std::chrono::steady_clock::now();
+    const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - begin)
+        .count();
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      pcout << "checkpoint " << final_folder << ": "
+            << std::setprecision(3)
+            << checkpoint::size(final_folder) / 1048576. << " MiB in "
+            << seconds << " s" << std::endl;
+  }
+
+  template <int dim>
+  bool
+  Simulation<dim>::checkpoint_due(const unsigned int step) const
+  {
+    if (scene.output.checkpoint_interval > 0 &&
+        step % scene.output.checkpoint_interval == 0)
+      return true;
+    if (scene.output.checkpoint_minutes == 0)
+      return false;
+    // The slowest rank's clock, so that all ranks decide alike.
+    const double seconds = Utilities::MPI::max(
+      std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                    last_checkpoint)
+        .count(),
+      comm);
+    return seconds >= 60 * scene.output.checkpoint_minutes;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::resume(const std::string &checkpoint_folder)
+  {
+    if (scene.analysis.enabled(scene.geometry.shape,
+                               scene.geometry.particles.size()))
+      throw std::runtime_error(
+        "--resume: a checkpoint does not hold the packing analysis' state "
+        "(its pore tracking and shrinkage reference start at t = 0), and "
+        "this scene has it ('Analysis/Packing analysis', auto: on for two "
+        "or more particles). Runs to be resumed need 'Analysis/Packing "
+        "analysis = false'.");
+    // Triangulation::load() wants the coarse mesh of the run.
+    make_box_mesh(tria, scene.domain);
+    tria.load(checkpoint_folder + "/mesh");
+    alpha.setup_dofs();
+    velocity.setup_dofs();
+    correction_velocity.setup_dofs();
+    for (auto &mechanism : mechanisms)
+      mechanism->setup(alpha);
+    transport.setup_system(alpha);
+    StateTransfer<dim> state;
+    alpha.add_to(state);
+    for (auto &mechanism : mechanisms)
+      mechanism->add_state(alpha, state);
+    state.deserialize();
+    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+
+    std::ifstream in(checkpoint_folder + "/counters.txt");
+    if (!in)
+      throw std::runtime_error("cannot read '" + checkpoint_folder +
+                               "/counters.txt'");
+    boost::archive::text_iarchive archive(in);
+    archive_counters(archive, first_step, first_time);
     initialised = true;
   }
 
@@ -384,7 +503,8 @@ namespace levelsinter
             metrics = std::make_unique<MetricsLog>(scene.output.directory +
                                                      "/metrics.csv",
                                                    columns,
-                                                   comm);
+                                                   comm,
+                                                   kept_metrics_rows);
           }
         metrics->add_row(row);
       }
@@ -481,6 +601,7 @@ namespace levelsinter
   Simulation<dim>::run()
   {
     start                  = std::chrono::steady_clock::now();
+    last_checkpoint        = start;
     // CPU time summed over the ranks: unlike the wall time it does not grow
     // when other jobs share the cores.
     const Timer cpu_timer(comm);
@@ -496,11 +617,16 @@ namespace levelsinter
       pcout << (i > 0 ? ", " : "") << mechanisms[i]->name();
     pcout << (mechanisms.empty() ? "none" : "") << std::endl;
 
-    double       t    = 0;
-    unsigned int step = 0;
-    check_curvature_resolution(t);
-    compute_interface_velocity(t, 0);
-    record(step, t, 0, scene.time.end_time == 0);
+    double       t    = first_time;
+    unsigned int step = first_step;
+    if (step == 0)
+      {
+        check_curvature_resolution(t);
+        compute_interface_velocity(t, 0);
+        record(step, t, 0, scene.time.end_time == 0);
+      }
+    else
+      pcout << "resumed at step " << step << ", t = " << t << std::endl;
 
     const double end_time = scene.time.end_time;
     while (t < end_time * (1 - 1e-12) &&
@@ -531,6 +657,8 @@ namespace levelsinter
         record(step, t, dt, finished || signal != 0);
         if (step_observer)
           step_observer(step, t, alpha);
+        if (signal != 0 || (!finished && checkpoint_due(step)))
+          write_checkpoint(step, t);
         if (signal != 0)
           {
             summary.stop_signal = signal;

@@ -4,6 +4,10 @@
 
 #include <deal.II/numerics/data_out.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
+
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/velocity_field.h>
 
@@ -39,6 +43,14 @@ namespace levelsinter
           const LevelSetField<dim>                        &level_set,
           const VelocityField<dim>                        &velocity,
           const std::function<void(DataOut<dim> &)> &add_fields);
+
+    /** The series so far (counter and index records), for checkpoints. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &counter &pvd_records &xdmf_entries;
+    }
 
   private:
     std::string                              directory;

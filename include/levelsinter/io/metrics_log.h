@@ -3,6 +3,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,9 +17,15 @@ namespace levelsinter
   class MetricsLog
   {
   public:
+    /**
+     * A new file, or with @p kept_rows (a restart) the existing one cut to
+     * its header and first @p kept_rows rows and continued; its header must
+     * name @p columns.
+     */
     MetricsLog(const std::string              &file_name,
                const std::vector<std::string> &columns,
-               const MPI_Comm                  comm);
+               const MPI_Comm                  comm,
+               const std::optional<unsigned int> kept_rows = {});
 
     void
     add_row(const std::vector<double> &values);
@@ -29,9 +36,17 @@ namespace levelsinter
       return column_names;
     }
 
+    /** Rows in the file so far. */
+    unsigned int
+    n_rows() const
+    {
+      return rows;
+    }
+
   private:
     std::vector<std::string> column_names;
     std::ofstream            out;
     bool                     root;
+    unsigned int             rows = 0;
   };
 } // namespace levelsinter

@@ -6,6 +6,7 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -26,11 +27,12 @@ namespace levelsinter
    *   -> Triangulation::execute_coarsening_and_refinement()
    *   -> the owners distribute their DoFs again (the same DoFHandler objects)
    *   -> interpolate().
-   * A checkpoint would use the same list: prepare_for_serialization()
-   * before Triangulation::save(), deserialize() after load() and
-   * distribute_dofs().
+   * A checkpoint uses the same list: prepare_for_serialization() before
+   * Triangulation::save(); on restart the same add() calls in the same
+   * order, then Triangulation::load(), the owners distribute their DoFs,
+   * deserialize().
    *
-   * After interpolate() each vector is ghosted on its DoFHandler's new
+   * After interpolate() or deserialize() each vector is ghosted on its DoFHandler's new
    * locally owned and relevant DoFs, with the hanging-node constraints of
    * that DoFHandler distributed (no other constraints: boundary values are
    * the owner's business).
@@ -56,14 +58,35 @@ namespace levelsinter
     void
     interpolate();
 
+    /** Attach the vectors to the next Triangulation::save(). */
+    void
+    prepare_for_serialization();
+
+    /** After Triangulation::load() and every DoFHandler distributed. */
+    void
+    deserialize();
+
   private:
+    using Transfer = parallel::distributed::SolutionTransfer<dim, Vector>;
     struct Entry
     {
-      const DoFHandler<dim> *dof_handler;
-      std::vector<Vector *>  vectors;
-      std::unique_ptr<parallel::distributed::SolutionTransfer<dim, Vector>>
-        transfer;
+      const DoFHandler<dim>    *dof_handler;
+      std::vector<Vector *>     vectors;
+      std::unique_ptr<Transfer> transfer;
     };
     std::vector<Entry> entries;
+
+    // One SolutionTransfer per entry, given its vectors by @p prepare.
+    void
+    attach(const std::function<void(Transfer &,
+                                    const std::vector<const Vector *> &)>
+             &prepare);
+
+    // Fill the entries' vectors, ghosted and with hanging nodes distributed,
+    // from owned-only vectors that @p fill writes (interpolate or
+    // deserialize).
+    void
+    fill_vectors(
+      const std::function<void(Entry &, std::vector<Vector *> &)> &fill);
   };
 } // namespace levelsinter

@@ -28,6 +28,9 @@ namespace levelsinter
     std::vector<std::pair<std::string, std::string>> overrides;
     // --overwrite: replace an earlier run in the output directory.
     bool overwrite = false;
+    // --resume DIRECTORY: continue the run there from its newest checkpoint;
+    // the scene is DIRECTORY/parameters.prm.
+    std::string resume_directory;
 
     static CommandLine
     parse(int argc, char **argv);

@@ -24,5 +24,9 @@ namespace levelsinter
     bool         write_xdmf        = true;
     unsigned int metrics_interval  = 1;
     unsigned int progress_interval = 10;
+    // Steps between checkpoints (0: none).
+    unsigned int checkpoint_interval = 0;
+    // Wall-clock minutes between checkpoints (0: none).
+    double checkpoint_minutes = 0;
   };
 } // namespace levelsinter

@@ -21,13 +21,15 @@
 #include <chrono>
 #include <functional>
 #include <memory>
+#include <optional>
+#include <string>
 
 namespace levelsinter
 {
   /**
    * From this call on, SIGINT and SIGTERM make a running Simulation stop
    * after its current step, as if that were the last (its metrics row and
-   * fields are written), instead of killing the process; the signal is in
+   * fields are written, and a checkpoint), instead of killing the process; the signal is in
    * Summary::stop_signal. The handler only records the signal; a second
    * one acts as usual (kills at once). For a program's main.
    */
@@ -71,6 +73,15 @@ namespace levelsinter
     /** Build the mesh and alpha at t = 0 (run() calls it if needed). */
     void
     initialise();
+
+    /**
+     * Instead of initialise(): read the mesh, the level set, the mechanisms'
+     * state and the counters from a checkpoint folder (checkpoint::newest()),
+     * written with any number of ranks; run() then continues from its step,
+     * keeping the first rows of metrics.csv and the field series up to it.
+     */
+    void
+    resume(const std::string &checkpoint_folder);
 
     Summary
     run();
@@ -159,6 +170,15 @@ namespace levelsinter
     correct_step(const double dt);
     double
     take_step(const double t);
+    // By Output/Checkpoint interval or minutes (collective).
+    bool
+    checkpoint_due(const unsigned int step) const;
+    void
+    write_checkpoint(const unsigned int step, const double t);
+    // Both directions of the checkpoint's counters (boost archives).
+    template <class Archive>
+    void
+    archive_counters(Archive &archive, unsigned int &step, double &t);
     void
     record(const unsigned int step,
            const double       t,
@@ -194,7 +214,12 @@ namespace levelsinter
     unsigned int                              total_iterations = 0;
     unsigned int                              last_iterations  = 0;
     bool                                      initialised      = false;
+    // Set by resume(): where run() starts and the metrics rows to keep.
+    unsigned int                              first_step = 0;
+    double                                    first_time = 0;
+    std::optional<unsigned int>               kept_metrics_rows;
     std::chrono::steady_clock::time_point     start;
+    std::chrono::steady_clock::time_point     last_checkpoint;
     RemainingTime                             remaining_time;
     std::function<void(unsigned int, double, const LevelSetField<dim> &)>
       step_observer;

@@ -1,0 +1,67 @@
+# --- Checkpoint and restart (issue 16) -------------------------------------
+# The circle translation to t = 0.15 (36 steps), a checkpoint every 5 steps:
+# run uninterrupted; run again, kill it with SIGKILL once
+# checkpoints/step_000010 exists, resume it with --resume; the two
+# metrics.csv must agree. Never compared: wall_time (a clock) and
+# volume_change (solid_volume minus its initial value, relative: a
+# difference of nearly equal numbers; solid_volume itself is compared).
+# Nor transport_iterations: the resumed run agrees with the uninterrupted
+# one to the transport's solver tolerance (1e-10), not bit for bit (the
+# cause of the 1e-10 is not pinned down), and a GMRES count can then differ
+# by one (measured 9 vs 8 at step 13). Same rank count: measured largest
+# relative difference 3.9e-10 (1 -> 1) and 3.4e-10 (2 -> 2); limit 1e-8. A
+# lost state (alpha, the CFL speed, the step or time) moves the columns by
+# 1e-3 or more. 1 -> 2: the band refinement marks a few cells differently
+# on 2 ranks than on 1 (an uninterrupted 2-rank run has 1954 cells at step
+# 4 against 1942 on 1 rank), so cells and dofs are not compared either; the
+# other columns differ by 7.8e-9 (measured), as the uninterrupted 1- and
+# 2-rank runs do (8.2e-9): limit 1e-7.
+# restart_test(NAME SCENE FIRST_RANKS RESUME_RANKS TOLERANCE IGNORED
+#              [--set ...]...): tests/restart_test.sh as test NAME.
+function(restart_test name scene first resume tolerance ignored)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/restart_test.sh
+    $<TARGET_FILE:levelsinter> $<TARGET_FILE:compare_metrics> ${MPIRUN}
+    "${MPIRUN_FLAGS}" ${scene} ${first} ${resume}
+    ${CMAKE_CURRENT_BINARY_DIR}/${name} ${tolerance} "${ignored}" ${ARGN})
+endfunction()
+
+set(RESTART_SCENE_ARGS
+  --set "Time/End time=0.15"
+  --set "Output/Checkpoint interval=5"
+  --set "Output/Field interval=5"
+  --set "Output/Progress interval=0")
+set(RESTART_IGNORED wall_time volume_change transport_iterations)
+restart_test(restart_circle_translation_np1_np1 ${SCENE} 1 1 1e-8
+  "${RESTART_IGNORED}" ${RESTART_SCENE_ARGS})
+restart_test(restart_circle_translation_np2_np2 ${SCENE} 2 2 1e-8
+  "${RESTART_IGNORED}" ${RESTART_SCENE_ARGS})
+restart_test(restart_circle_translation_np1_np2 ${SCENE} 1 2 1e-7
+  "${RESTART_IGNORED};cells;dofs" ${RESTART_SCENE_ARGS})
+# Surface diffusion keeps v_s^{n-1} (Eq. 81) in the checkpoint: the two
+# grains, 30 steps, a checkpoint every 5 (packing analysis off: a checkpoint
+# does not hold its state, and --resume refuses such a scene). Not compared
+# besides the above: the surface-diffusion solve's iterations and CPU time.
+# Measured largest relative difference 2.8e-9 (1 -> 1), 2.5e-9 (2 -> 2, by
+# hand), 1.2e-8 (1 -> 2; uninterrupted 1- and 2-rank runs: 1.3e-8). A v_s^{n-1}
+# lost at the restart changes the step's v_s by about 8 % (test
+# mechanism_hooks_sd_lagged_2d). Limits 1e-7 and 1e-6.
+set(RESTART_SD_IGNORED ${RESTART_IGNORED} surface_diffusion_iterations
+  surface_diffusion_solve_cpu_time)
+set(RESTART_SD_ARGS
+  --set "Time/Maximum steps=30" --set "Output/Checkpoint interval=5"
+  --set "Output/Metrics interval=1" --set "Output/Progress interval=0"
+  --set "Analysis/Packing analysis=false")
+restart_test(restart_two_grains_sd_np1_np1 ${TWO_GRAINS} 1 1 1e-7
+  "${RESTART_SD_IGNORED}" ${RESTART_SD_ARGS})
+restart_test(restart_two_grains_sd_np1_np2 ${TWO_GRAINS} 1 2 1e-6
+  "${RESTART_SD_IGNORED};cells;dofs" ${RESTART_SD_ARGS})
+# --resume takes the scene from the run directory, and needs a run there.
+bad_input_test(resume_with_scene "give no scene file" --resume out ${SCENE})
+bad_input_test(resume_no_run "resume_nowhere/parameters.prm"
+  --resume resume_nowhere)
+# Output/Checkpoint minutes: 1e-6 min (60 us) asks for a checkpoint after
+# every step but the last (13 steps); the folder must then hold the
+# newest two only.
+add_test(NAME restart_checkpoint_minutes_keeps_two COMMAND bash -c
+  "rm -rf restart_minutes && $<TARGET_FILE:levelsinter> --set 'Output/Directory=restart_minutes' --set 'Output/Checkpoint minutes=1e-6' --set 'Time/End time=0.05' --set 'Output/Field formats=none' ${SCENE} > /dev/null && ls restart_minutes/checkpoints && test \"$(ls restart_minutes/checkpoints)\" = \"$(printf 'step_000011\\nstep_000012')\"")
