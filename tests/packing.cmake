@@ -130,7 +130,8 @@ add_test(NAME packing_neck_periodic COMMAND ${PACK_TEST} neck:1e-5
 add_test(NAME packing_scene_27_3d_np2
   COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 $<TARGET_FILE:levelsinter>
     --set "Mesh refinement/Maximum level=2" --set "Time/Maximum steps=2"
-    --set "Output/Field formats=none" --set "Output/Directory=packing_scene_27"
+    --overwrite --set "Output/Field formats=none"
+    --set "Output/Directory=packing_scene_27"
     ${CMAKE_SOURCE_DIR}/parameter_files/packing_27_surface_diffusion_3d.prm)
 set_tests_properties(packing_scene_27_3d_np2 PROPERTIES
   PASS_REGULAR_EXPRESSION "done: 2 steps")

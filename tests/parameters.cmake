@@ -7,7 +7,8 @@ set(CYLINDERS ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_2d.prm)
 add_test(NAME parameters_deprecated_entry COMMAND levelsinter
   --set "Viscous flow/Symmetry planes=y-" --set "Viscous flow/Solver=iterative"
   --set "Time/Maximum steps=2" --set "Output/Field formats=none"
-  --set "Output/Directory=parameters_deprecated_entry" ${CYLINDERS})
+  --overwrite --set "Output/Directory=parameters_deprecated_entry"
+  ${CYLINDERS})
 set_tests_properties(parameters_deprecated_entry PROPERTIES
   PASS_REGULAR_EXPRESSION
   "warning: 'Viscous flow/Symmetry planes' is deprecated, use 'Domain/Symmetry planes'.*warning: 'Viscous flow/Solver' is deprecated, use 'Viscous flow/Linear solver'.*done: 2 steps")
@@ -47,7 +48,8 @@ add_test(NAME parameters_particle_header_order COMMAND levelsinter
   --set "Geometry/Particles=" --set
   "Geometry/Particle file=${CMAKE_CURRENT_SOURCE_DIR}/scenes/reordered_particles.csv"
   --set "Time/Maximum steps=1" --set "Output/Field formats=none"
-  --set "Output/Directory=parameters_particle_header_order" ${TWO_PARTICLES})
+  --overwrite --set "Output/Directory=parameters_particle_header_order"
+  ${TWO_PARTICLES})
 set_tests_properties(parameters_particle_header_order PROPERTIES
   PASS_REGULAR_EXPRESSION "done: 1 steps")
 bad_input_test(particle_file_header
