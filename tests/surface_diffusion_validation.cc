@@ -6,8 +6,9 @@
 // mullins: SCENE is a perturbed-particle scene in reduced time (Time unit =
 // reduced, reference radius R = the particle's radius), in which mode n
 // decays as exp(-n^2 (n^2 - 1) t*) in 2D and as exp(-(n-1) n (n+1) (n+2) t*)
-// in 3D (Mullins 1957). Every combination of LEVELS (maximum refinement
-// level) and STEPS (steps per e-folding time) is run to one e-folding time;
+// in 3D (Mullins 1957); with volume diffusion on (2D, elastic) as
+// exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3. Every
+// combination of LEVELS (maximum refinement level) and STEPS (steps per e-folding time) is run to one e-folding time;
 // the amplitude is measured after every step from the discrete interface
 // and the rate fitted by least squares to log|amplitude|. Settings: --mode
 // n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
@@ -134,7 +135,15 @@ namespace
     const bool both_signs = setting(options, "signs", 1) == 2;
 
     const SceneParameters base = read_scene(scene_file, options.overrides);
+    // Volume diffusion of an elastic cylinder (plane strain, 2D only):
+    // s_n = (2/3)(1 + nu) n (n^2 - 1) in t* = C_v gamma t / R^3
+    // (doc/numerics.md, "Volume diffusion").
+    const double G = base.phase_law.shear_modulus,
+                 K = base.phase_law.bulk_modulus;
+    const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
     const double exact_rate =
+      base.volume_diffusion.enabled ?
+        2. / 3 * (1 + nu) * mode * (mode * mode - 1.) :
       dim == 2 ? double(mode * mode) * (mode * mode - 1.) :
                  double(mode - 1) * mode * (mode + 1) * (mode + 2);
     const double end_time = time_fraction / exact_rate;
