@@ -8,10 +8,10 @@
 // decays as exp(-n^2 (n^2 - 1) t*) in 2D and as exp(-(n-1) n (n+1) (n+2) t*)
 // in 3D (Mullins 1957); with volume diffusion on (2D, elastic) as
 // exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3. Every
-// combination of LEVELS (maximum refinement level) and STEPS (steps per e-folding time) is run to one e-folding time;
-// the amplitude is measured after every step from the discrete interface
-// and the rate fitted by least squares to log|amplitude|. Settings: --mode
-// n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
+// combination of LEVELS (maximum refinement level) and STEPS (steps per
+// e-folding time) is run to one e-folding time; the amplitude is measured
+// after every step from the discrete interface and the rate fitted by
+// least squares to log|amplitude|. Settings: --mode n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
 // v_s), --filter-thickness E and --band-width W (lower bounds; the
 // defaults are 6 h and 4 h), --signs 2 (each case with
 // +delta and -delta, rate = their mean); limits --max-rate-error,
