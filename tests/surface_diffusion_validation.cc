@@ -12,8 +12,9 @@
 // e-folding time) is run to one e-folding time; the amplitude is measured
 // after every step from the discrete interface and the rate fitted by
 // least squares to log|amplitude|. Settings: --mode n, --time-fraction f
-// (run f e-folding times), --coupled 0 (kappa then v_s), --filter-thickness E and --band-width W (lower bounds; the
-// defaults are 6 h and 4 h), --signs 2 (each case with
+// (run f e-folding times), --coupled 0 (kappa then v_s),
+// --filter-thickness E and --band-width W (lower bounds; the defaults are
+// 6 h and 4 h), --signs 2 (each case with
 // +delta and -delta, rate = their mean); limits --max-rate-error,
 // --max-volume-change, checked on the last run.
 //
