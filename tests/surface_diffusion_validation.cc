@@ -6,13 +6,15 @@
 // mullins: SCENE is a perturbed-particle scene in reduced time (Time unit =
 // reduced, reference radius R = the particle's radius), in which mode n
 // decays as exp(-n^2 (n^2 - 1) t*) in 2D and as exp(-(n-1) n (n+1) (n+2) t*)
-// in 3D (Mullins 1957). Every combination of LEVELS (maximum refinement
-// level) and STEPS (steps per e-folding time) is run to one e-folding time;
-// the amplitude is measured after every step from the discrete interface
-// and the rate fitted by least squares to log|amplitude|. Settings: --mode
-// n, --time-fraction f (run f e-folding times), --coupled 0 (kappa then
-// v_s), --filter-thickness E and --band-width W (lower bounds; the
-// defaults are 6 h and 4 h), --signs 2 (each case with
+// in 3D (Mullins 1957); with volume diffusion on (2D, elastic) as
+// exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3. Every
+// combination of LEVELS (maximum refinement level) and STEPS (steps per
+// e-folding time) is run to one e-folding time; the amplitude is measured
+// after every step from the discrete interface and the rate fitted by
+// least squares to log|amplitude|. Settings: --mode n, --time-fraction f
+// (run f e-folding times), --coupled 0 (kappa then v_s),
+// --filter-thickness E and --band-width W (lower bounds; the defaults are
+// 6 h and 4 h), --signs 2 (each case with
 // +delta and -delta, rate = their mean); limits --max-rate-error,
 // --max-volume-change, checked on the last run.
 //
@@ -22,7 +24,8 @@
 // grains: on the narrowest cross-section between the centres; a packing:
 // the smallest over the neighbour pairs), x / Rbar with Rbar =
 // 2 R1 R2 / (R1 + R2) (paper Fig. 27; a packing: the mean radius),
-// t* = C_s t / Rbar^4, the solid-volume change and the change of the
+// t* = C_s t / Rbar^4 (volume diffusion: C_v gamma t / Rbar^3), the
+// solid-volume change and the change of the
 // centre distances read off the level set (rays from each centre away
 // from its neighbours, see sample() in neck()) and the change of the
 // far-end-to-far-end length (length_change, the exits along the outward
@@ -133,7 +136,15 @@ namespace
     const bool both_signs = setting(options, "signs", 1) == 2;
 
     const SceneParameters base = read_scene(scene_file, options.overrides);
+    // Volume diffusion of an elastic cylinder (plane strain, 2D only):
+    // s_n = (2/3)(1 + nu) n (n^2 - 1) in t* = C_v gamma t / R^3
+    // (doc/numerics.md, "Volume diffusion").
+    const double G = base.phase_law.shear_modulus,
+                 K = base.phase_law.bulk_modulus;
+    const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
     const double exact_rate =
+      base.volume_diffusion.enabled ?
+        2. / 3 * (1 + nu) * mode * (mode * mode - 1.) :
       dim == 2 ? double(mode * mode) * (mode * mode - 1.) :
                  double(mode - 1) * mode * (mode + 1) * (mode + 2);
     const double end_time = time_fraction / exact_rate;
@@ -385,9 +396,14 @@ namespace
     for (unsigned int i = 0; i < particles.size(); ++i)
       if (!neighbours[i].empty())
         directions[i] = shift_directions(centres[i], neighbours[i]);
-    // t* = C_s t / Rbar^4, whatever time unit the scene runs in.
+    // t* = C_s t / Rbar^4 (volume diffusion: C_v gamma t / Rbar^3),
+    // whatever time unit the scene runs in.
     const auto  &sd = scene.surface_diffusion;
+    const auto  &vd = scene.volume_diffusion;
+    const double gamma = scene.viscous_flow.surface_tension;
     const double t_star_per_t =
+      vd.enabled ?
+        vd.coefficient_in_time_unit(gamma) * gamma / std::pow(r_bar, 3) :
       sd.time_unit == SurfaceDiffusionParameters::TimeUnit::reduced ?
         std::pow(sd.reference_radius / r_bar, 4) :
         sd.surface_mobility() / std::pow(r_bar, 4);

@@ -571,9 +571,12 @@ namespace levelsinter
   {
     // u^n = u^{n-1} + dt v^n (Eq. 92) on the velocity block; the pressure
     // block of the vector is unused.
+    // Both operands without ghosts: Trilinos adds vectors of one layout.
     BlockVector owned(owned_partitioning, dofs.get_communicator());
-    owned = old_displacement;
-    owned.block(0).add(dt, ghosted_solution.block(0));
+    BlockVector velocity(owned_partitioning, dofs.get_communicator());
+    owned    = old_displacement;
+    velocity = ghosted_solution;
+    owned.block(0).add(dt, velocity.block(0));
     old_displacement = owned;
   }
 

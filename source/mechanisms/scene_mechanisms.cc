@@ -3,6 +3,7 @@
 #include <levelsinter/mechanisms/viscous_flow.h>
 #include <levelsinter/mechanisms/surface_diffusion.h>
 #include <levelsinter/mechanisms/volume_correction.h>
+#include <levelsinter/mechanisms/volume_diffusion.h>
 
 namespace levelsinter
 {
@@ -27,6 +28,17 @@ namespace levelsinter
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
         scene.surface_diffusion, filter, timer));
+    // SceneParameters refuses it with viscous flow and without the
+    // elastic-solid law.
+    if (scene.volume_diffusion.enabled)
+      mechanisms.push_back(std::make_unique<VolumeDiffusion<dim>>(
+        scene.volume_diffusion,
+        scene.viscous_flow,
+        scene.phase_law,
+        scene.domain.symmetry_planes,
+        filter,
+        scene.refinement.max_level,
+        timer));
     // Last: it corrects the volume whatever the others moved.
     if (scene.volume_correction.enabled)
       mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(filter));

@@ -65,6 +65,7 @@ namespace levelsinter
     PrescribedVelocityParameters::declare(prm);
     ViscousFlowParameters::declare(prm);
     SurfaceDiffusionParameters::declare(prm);
+    VolumeDiffusionParameters::declare(prm);
     VolumeCorrectionParameters::declare(prm);
     OutputParameters::declare(prm);
     AnalysisParameters::declare(prm);
@@ -145,6 +146,7 @@ namespace levelsinter
         velocity.parse(prm, dimension);
         viscous_flow.parse(prm);
         surface_diffusion.parse(prm);
+        volume_diffusion.parse(prm);
         volume_correction.parse(prm);
         output.parse(prm);
         analysis.parse(prm, dimension);
@@ -178,11 +180,33 @@ namespace levelsinter
     // diffusion) lets the CFL number or its own limit choose the step.
     if (velocity.type == PrescribedVelocityParameters::Type::none &&
         time.time_step == 0 && !viscous_flow.enabled &&
-        !surface_diffusion.enabled)
+        !surface_diffusion.enabled && !volume_diffusion.enabled)
       fail_entry("Time/Time step",
                  "with Velocity/Type = none and no mechanism giving a "
                  "velocity the CFL number cannot choose a step: set a "
                  "positive 'Time step'");
+
+    // Volume diffusion moves the interface with -C_v (grad p . n) n of the
+    // elastic solid's pressure (Algorithm 3): the particles do not flow.
+    if (volume_diffusion.enabled)
+      {
+        if (viscous_flow.enabled)
+          fail_entry("Volume diffusion/Enabled",
+                     "cannot be combined with 'Viscous flow/Enabled = "
+                     "true': volume diffusion solves the elastic-solid "
+                     "problem itself and moves the interface by diffusion "
+                     "only (its surface tension and atmosphere are read "
+                     "from the Viscous flow section, which stays disabled)");
+        if (phase_law.law != PhaseLawParameters::Law::elastic_solid)
+          fail_entry("Phase law/Law",
+                     "must be 'elastic-solid' with volume diffusion: the "
+                     "pressure that drives it is that of the elastic "
+                     "particles (paper Eq. 92-94)");
+        if (!(viscous_flow.surface_tension > 0))
+          fail_entry("Viscous flow/Surface tension",
+                     "must be positive with volume diffusion: it is the "
+                     "surface energy gamma that loads the elastic solid");
+      }
 
     // The band is located by reading distances back through the filter,
     // which saturates at E; at E itself every saturated node reads as "in

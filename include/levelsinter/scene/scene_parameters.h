@@ -14,6 +14,7 @@
 #include <levelsinter/scene/time_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 #include <levelsinter/scene/volume_correction_parameters.h>
+#include <levelsinter/scene/volume_diffusion_parameters.h>
 
 #include <string>
 #include <vector>
@@ -78,6 +79,7 @@ namespace levelsinter
     PrescribedVelocityParameters velocity;
     ViscousFlowParameters        viscous_flow;
     SurfaceDiffusionParameters   surface_diffusion;
+    VolumeDiffusionParameters    volume_diffusion;
     VolumeCorrectionParameters   volume_correction;
     OutputParameters             output;
     AnalysisParameters           analysis;

@@ -1,0 +1,126 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <levelsinter/geometry/normal_gradient_extension.h>
+#include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/mechanics/two_phase_stokes.h>
+#include <levelsinter/mechanisms/mechanism.h>
+#include <levelsinter/scene/phase_law_parameters.h>
+#include <levelsinter/scene/viscous_flow_parameters.h>
+#include <levelsinter/scene/volume_diffusion_parameters.h>
+
+#include <memory>
+
+namespace levelsinter
+{
+  /**
+   * Volume diffusion (paper Sect. 6, Algorithm 3): each step solves the
+   * elastic-solid / fluid problem (Eq. 92-94, ElasticSolidFluid) under the
+   * sharp tensorial surface tension (Eq. 108), extends xi = grad p . N from
+   * the solid's pressure (Eq. 110-111, NormalGradientExtension) and adds
+   * v = -C_v xi N at the level-set nodes (Eq. 112). The particles do not
+   * move with the elastic velocity; it only builds the displacement
+   * u^n = u^{n-1} + dt v^n whose strain the next step's history reads.
+   * Surface energy gamma, atmosphere and solver: the `Viscous flow`
+   * entries (disabled as a mechanism); moduli: `Phase law`.
+   */
+  template <int dim>
+  class VolumeDiffusion : public Mechanism<dim>
+  {
+  public:
+    VolumeDiffusion(const VolumeDiffusionParameters       &parameters,
+                    const ViscousFlowParameters           &mechanics,
+                    const PhaseLawParameters              &law,
+                    const std::vector<types::boundary_id> &symmetry_planes,
+                    const LevelSetFilter                  &filter,
+                    const unsigned int                     band_level,
+                    TimerOutput                           &timer);
+
+    std::string
+    name() const override
+    {
+      return "volume diffusion";
+    }
+
+    /** Creates the elastic problem on first use, then redistributes its
+     * DoFs (the displacement comes back through add_state()). */
+    void
+    setup(const LevelSetField<dim> &alpha) override;
+
+    void
+    add_velocity(const LevelSetField<dim> &alpha,
+                 const double              t,
+                 const double              dt,
+                 VelocityField<dim>       &velocity) override;
+
+    /** The displacement u^{n-1} of the next step on the new mesh. */
+    void
+    add_state(const LevelSetField<dim> &alpha,
+              StateTransfer<dim>       &transfer) override;
+
+    /** Pressure, xi and displacement of the last step. */
+    void
+    add_output_fields(const LevelSetField<dim> &alpha,
+                      DataOut<dim>             &data_out) const override;
+
+    std::vector<std::string>
+    metric_names() const override
+    {
+      return {"volume_diffusion_mechanics_iterations",
+              "volume_diffusion_xi_iterations",
+              "volume_diffusion_unsourced_cells"};
+    }
+
+    std::vector<double>
+    metric_values() const override
+    {
+      return {double(mechanics_iterations),
+              double(xi_iterations),
+              double(extension.unsourced_interface_cells())};
+    }
+
+    /** The elastic problem of the last step (for tests and output). */
+    const TwoPhaseStokes<dim> &
+    mechanics() const
+    {
+      return *operator_;
+    }
+
+    /** xi of the last step on the level set's DoFs. */
+    const NormalGradientExtension<dim> &
+    normal_gradient() const
+    {
+      return extension;
+    }
+
+  private:
+    // u^n = u^{n-1} + dt v^n with the last (accepted) solve.
+    void
+    advance_displacement();
+
+    const double                          coefficient; // C_v, scene time
+    typename TwoPhaseStokes<dim>::Settings settings;
+    const std::unique_ptr<PhaseLaw<dim>>  phases;
+    const double                          probe_step; // dt when given 0
+    TimerOutput                          &timer;
+    std::unique_ptr<TwoPhaseStokes<dim>>  operator_;
+    NormalGradientExtension<dim>          extension;
+    // The displacement as one plain vector on the elastic problem's
+    // DoFHandler while the mesh changes (StateTransfer carries plain
+    // vectors); copied back into the block vector at the next step.
+    TrilinosWrappers::MPI::Vector carried_displacement;
+    // Time and step of the last solve on this mesh (-1: none). The time
+    // loop may solve a step again with a smaller dt; only the last solve at
+    // a time is the accepted one, known once a later time is asked for or
+    // the mesh changes.
+    double       solved_time          = -1;
+    double       solved_step          = 0;
+    unsigned int mechanics_iterations = 0;
+    unsigned int xi_iterations        = 0;
+    bool         warned_unsourced     = false;
+  };
+} // namespace levelsinter

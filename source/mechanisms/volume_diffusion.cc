@@ -1,0 +1,211 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <levelsinter/mechanisms/volume_diffusion.h>
+
+#include <iostream>
+
+namespace levelsinter
+{
+  namespace
+  {
+    template <int dim>
+    typename NormalGradientExtension<dim>::Settings
+    extension_settings(const VolumeDiffusionParameters       &p,
+                       const std::vector<types::boundary_id> &symmetry_planes)
+    {
+      typename NormalGradientExtension<dim>::Settings s;
+      s.interior_offset      = p.interior_offset;
+      s.linear_extrapolation = p.linear_extrapolation;
+      s.solver_tolerance     = p.solver_tolerance;
+      s.max_iterations       = p.max_iterations;
+      s.symmetry_boundaries  = symmetry_planes;
+      return s;
+    }
+
+    // @p block (ghosted, numbered as @p dofs: TwoPhaseStokes::setup_dofs()
+    // numbers the velocity block first) as one ghosted plain vector on
+    // @p dofs, the form StateTransfer and NormalGradientExtension read.
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    as_plain_vector(const TrilinosWrappers::MPI::BlockVector &block,
+                    const DoFHandler<dim>                    &dofs)
+    {
+      const IndexSet owned = dofs.locally_owned_dofs();
+      TrilinosWrappers::MPI::Vector plain(owned, dofs.get_communicator());
+      for (const auto i : owned)
+        plain(i) = block(i);
+      plain.compress(VectorOperation::insert);
+      TrilinosWrappers::MPI::Vector ghosted(
+        owned,
+        DoFTools::extract_locally_relevant_dofs(dofs),
+        dofs.get_communicator());
+      ghosted = plain;
+      return ghosted;
+    }
+  } // namespace
+
+  template <int dim>
+  VolumeDiffusion<dim>::VolumeDiffusion(
+    const VolumeDiffusionParameters       &parameters,
+    const ViscousFlowParameters           &mechanics,
+    const PhaseLawParameters              &law,
+    const std::vector<types::boundary_id> &symmetry_planes,
+    const LevelSetFilter                  &filter,
+    const unsigned int                     band_level,
+    TimerOutput                           &timer)
+    : coefficient(
+        parameters.coefficient_in_time_unit(mechanics.surface_tension))
+    , settings(TwoPhaseStokes<dim>::Settings::from(mechanics,
+                                                   symmetry_planes,
+                                                   band_level))
+    , phases(make_phase_law<dim>(law, mechanics))
+    , probe_step(mechanics.fluid_viscosity / (1e-5 * law.shear_modulus))
+    , timer(timer)
+    , extension(filter,
+                extension_settings<dim>(parameters, symmetry_planes),
+                timer)
+  {
+    // The paper's Eq. 108 on {alpha_h = 0}: the Laplace jump stays in the
+    // cut cells, clear of the nodes where xi reads grad p.
+    settings.form = TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::setup(const LevelSetField<dim> &alpha)
+  {
+    // The DoFHandler is tied to the triangulation, which the time loop
+    // builds after the mechanisms: create the problem on first use and
+    // keep it (and its DoFHandler, which the state transfer refers to).
+    if (!operator_)
+      operator_ = std::make_unique<TwoPhaseStokes<dim>>(
+        alpha.dof_handler().get_triangulation(), settings, *phases);
+    operator_->setup_dofs();
+    extension.setup(alpha);
+    solved_time = -1;
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::advance_displacement()
+  {
+    operator_->advance_displacement(solved_step);
+    solved_time = -1;
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::add_state(const LevelSetField<dim> &,
+                                  StateTransfer<dim>       &transfer)
+  {
+    // The time loop adapts the mesh after an accepted step.
+    if (solved_time >= 0)
+      advance_displacement();
+    carried_displacement = as_plain_vector(operator_->displacement(),
+                                           operator_->dof_handler());
+    transfer.add(operator_->dof_handler(), {&carried_displacement});
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::add_velocity(const LevelSetField<dim> &alpha,
+                                     const double              t,
+                                     const double              dt,
+                                     VelocityField<dim>       &velocity)
+  {
+    if (solved_time >= 0 && t > solved_time)
+      advance_displacement();
+    if (carried_displacement.size() > 0)
+      {
+        // Back from the mesh change (add_state()).
+        auto &u = operator_->displacement();
+        typename TwoPhaseStokes<dim>::BlockVector owned;
+        std::vector<IndexSet> partitioning;
+        for (unsigned int b = 0; b < u.n_blocks(); ++b)
+          partitioning.push_back(u.block(b).locally_owned_elements());
+        owned.reinit(partitioning, operator_->dof_handler().get_communicator());
+        for (const auto i : operator_->dof_handler().locally_owned_dofs())
+          owned(i) = carried_displacement(i);
+        owned.compress(VectorOperation::insert);
+        u = owned;
+        carried_displacement.clear();
+      }
+
+    // dt = 0: the time loop's first look at the speed. The rate form needs
+    // a step; where eta_f / (G dt) is small the elastic pressure does not
+    // depend on it (paper Sect. 6.6: below 2e-5 the atmosphere does not
+    // disturb the grains), so take the step at which that ratio is 1e-5.
+    phases->set_time_step(dt > 0 ? dt : probe_step);
+    {
+      TimerOutput::Scope scope(timer, "volume diffusion: mechanics");
+      operator_->assemble(alpha, TrilinosWrappers::MPI::Vector(), 0);
+      mechanics_iterations = operator_->solve();
+    }
+    if (dt > 0)
+      {
+        solved_time = t;
+        solved_step = dt;
+      }
+
+    const unsigned int unsourced_before = extension.unsourced_interface_cells();
+    xi_iterations = extension.solve(alpha,
+                                    operator_->dof_handler(),
+                                    dim,
+                                    as_plain_vector(operator_->solution(),
+                                                    operator_->dof_handler()));
+    const unsigned int unsourced = extension.unsourced_interface_cells();
+    if (unsourced > 0 && unsourced_before == 0 && !warned_unsourced)
+      {
+        warned_unsourced = true;
+        if (Utilities::MPI::this_mpi_process(
+              alpha.dof_handler().get_communicator()) == 0)
+          std::cout << "warning: t = " << t << ": " << unsourced
+                    << " interface cells lie where the solid is thinner than "
+                    << "2 lambda; volume diffusion is off there (refine there "
+                    << "or lower 'Volume diffusion/Interior offset')"
+                    << std::endl;
+      }
+
+    TimerOutput::Scope scope(timer, "volume diffusion velocity");
+    // Eq. 112 at each level-set node.
+    velocity.add_vertex_values(alpha.dof_handler(),
+                               [&](const auto &cell, const unsigned int v) {
+      return extension.velocity(cell->vertex_dof_index(v, 0), coefficient);
+    });
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::add_output_fields(const LevelSetField<dim> &alpha,
+                                          DataOut<dim> &data_out) const
+  {
+    using Interpretation =
+      DataComponentInterpretation::DataComponentInterpretation;
+    std::vector<Interpretation> interpretation(
+      dim, DataComponentInterpretation::component_is_part_of_vector);
+    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+
+    // The elastic velocity rate and the pressure of the last solve.
+    std::vector<std::string> names(dim, "volume_diffusion_elastic_velocity");
+    names.emplace_back("volume_diffusion_pressure");
+    data_out.add_data_vector(operator_->dof_handler(),
+                             operator_->solution(),
+                             names,
+                             interpretation);
+    // u^{n-1}: its pressure block is unused (zero).
+    std::vector<std::string> u_names(dim, "volume_diffusion_displacement");
+    u_names.emplace_back("volume_diffusion_displacement_unused");
+    data_out.add_data_vector(operator_->dof_handler(),
+                             operator_->displacement(),
+                             u_names,
+                             interpretation);
+    data_out.add_data_vector(alpha.dof_handler(),
+                             extension.normal_gradient(),
+                             "volume_diffusion_xi");
+  }
+
+  template class VolumeDiffusion<2>;
+  template class VolumeDiffusion<3>;
+} // namespace levelsinter
