@@ -490,7 +490,7 @@ namespace
                          "set Time unit = reduced\n"
                          "set Reference radius = 2e-7\n"
                          "set Extrapolation = constant\n");
-    expect(!p.linear_extrapolation && p.interior_offset == 3,
+    expect(!p.linear_extrapolation && p.interior_offset == 6,
            "Extrapolation = constant, default Interior offset");
     const double expected = 0.6 * 8.5e-30 * 1e-17 / 1.9e-20;
     expect(std::abs(p.mobility() / expected - 1) < 1e-14,

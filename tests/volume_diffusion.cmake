@@ -5,7 +5,7 @@ deal_ii_setup_target(normal_gradient_extension)
 set(XI $<TARGET_FILE:normal_gradient_extension>)
 
 # xi on the discrete interface of a circle (R = 0.3) / sphere against the
-# exact grad p . n, relative to max |xi|, with lambda = 3 h (the default)
+# exact grad p . n, relative to max |xi|, with lambda = 3 h (the driver's default)
 # and E = 6 h. Measured RMS errors (doc/numerics.md, "Volume diffusion"),
 # 2D at h = 1/32, 1/64, 1/128 and 3D at h = 1/16, 1/32:
 #   p = x (constant along the normals)  2D 2.1e-3 5.3e-4 2.2e-4  3D 4.8e-2 3.0e-3

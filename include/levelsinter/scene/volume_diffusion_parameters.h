@@ -49,7 +49,7 @@ namespace levelsinter
       reduced // t* = C_v gamma t / R^3
     } time_unit = TimeUnit::seconds;
     double       reference_radius = 0;         // R of t*
-    double       interior_offset  = 3;         // lambda in cells (Eq. 110)
+    double       interior_offset  = 6;         // lambda in cells (Eq. 110)
     bool         linear_extrapolation = true;  // or constant (Eq. 111)
     double       solver_tolerance = 1e-10;
     unsigned int max_iterations   = 1000;
