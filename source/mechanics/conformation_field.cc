@@ -1,0 +1,427 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+
+#include <levelsinter/level_set/same_cell.h>
+#include <levelsinter/mechanics/conformation_field.h>
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  template <int dim>
+  ConformationField<dim>::ConformationField(const DoFHandler<dim>   &dofs,
+                                            const ConformationModel &model)
+    : model(model)
+    , dofs(dofs)
+    , fe(1)
+    , comm(dofs.get_communicator())
+  {}
+
+  template <int dim>
+  std::vector<std::pair<unsigned int, unsigned int>>
+  ConformationField<dim>::components()
+  {
+    if (dim == 2)
+      return {{0, 0}, {1, 1}, {2, 2}, {0, 1}};
+    return {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {0, 2}, {1, 2}};
+  }
+
+  template <int dim>
+  SymmetricTensor<2, 3>
+  ConformationField<dim>::conformation(const std::vector<double> &s)
+  {
+    SymmetricTensor<2, 3> log_c;
+    const auto            list = components();
+    for (unsigned int k = 0; k < list.size(); ++k)
+      log_c[list[k].first][list[k].second] = s[k];
+    return tensor_exp(log_c);
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::setup()
+  {
+    if (dofs.get_fe().n_components() != 1 || dofs.get_fe().degree != 1)
+      throw std::logic_error("ConformationField needs a scalar Q1 DoFHandler");
+    owned    = dofs.locally_owned_dofs();
+    relevant = DoFTools::extract_locally_relevant_dofs(dofs);
+    constraints.clear();
+    constraints.reinit(relevant);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    constraints.close();
+
+    DynamicSparsityPattern pattern(relevant);
+    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+    SparsityTools::distribute_sparsity_pattern(pattern, owned, comm, relevant);
+    matrix.reinit(owned, owned, pattern, comm);
+
+    state.resize(components().size());
+    for (Vector &v : state)
+      v.reinit(owned, relevant, comm);
+    advanced = state;
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::set(
+    const std::function<SymmetricTensor<2, 3>(const Point<dim> &)> &c)
+  {
+    std::map<types::global_dof_index, Point<dim>> points;
+    DoFTools::map_dofs_to_support_points(MappingQ1<dim>(), dofs, points);
+    const auto          list = components();
+    std::vector<Vector> values(list.size(), Vector(owned, comm));
+    for (const auto &[index, point] : points)
+      if (owned.is_element(index))
+        {
+          const SymmetricTensor<2, 3> log_c = tensor_log(c(point));
+          for (unsigned int k = 0; k < list.size(); ++k)
+            values[k][index] = log_c[list[k].first][list[k].second];
+        }
+    for (unsigned int k = 0; k < list.size(); ++k)
+      {
+        values[k].compress(VectorOperation::insert);
+        constraints.distribute(values[k]);
+        state[k] = values[k];
+      }
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::commit()
+  {
+    state = advanced;
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::fade(
+    const std::function<double(types::global_dof_index)> &weight)
+  {
+    for (Vector &component : state)
+      {
+        Vector values(owned, comm);
+        for (const auto i : owned)
+          values[i] = weight(i) * component[i];
+        values.compress(VectorOperation::insert);
+        constraints.distribute(values);
+        component = values;
+      }
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::stress_values(
+    const FEValues<dim>                  &values,
+    std::vector<SymmetricTensor<2, dim>> &stress) const
+  {
+    const auto          list = components();
+    const unsigned int  n_q  = values.n_quadrature_points;
+    std::vector<double> s_q(n_q);
+    std::vector<SymmetricTensor<2, 3>> log_c(n_q);
+    for (unsigned int k = 0; k < list.size(); ++k)
+      {
+        values.get_function_values(state[k], s_q);
+        for (unsigned int q = 0; q < n_q; ++q)
+          log_c[q][list[k].first][list[k].second] = s_q[q];
+      }
+    stress.resize(n_q);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const SymmetricTensor<2, 3> tau = model.stress(tensor_exp(log_c[q]));
+        for (unsigned int i = 0; i < dim; ++i)
+          for (unsigned int j = i; j < dim; ++j)
+            stress[q][i][j] = tau[i][j];
+      }
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::assemble_matrix(const VelocityField<dim> &velocity,
+                                          const double              dt)
+  {
+    matrix = 0;
+    const QGauss<dim>     quadrature(2);
+    const QGauss<dim - 1> face_quadrature(2);
+    FEValues<dim>         values(fe,
+                         quadrature,
+                         update_values | update_gradients |
+                           update_JxW_values);
+    FEValues<dim>     velocity_values(velocity.fe(), quadrature, update_values);
+    FEFaceValues<dim> face_values(fe,
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    FEFaceValues<dim> velocity_face_values(velocity.fe(),
+                                           face_quadrature,
+                                           update_values);
+    const FEValuesExtractors::Vector     velocities(0);
+    const unsigned int                   n = fe.n_dofs_per_cell();
+    FullMatrix<double>                   cell_matrix(n, n);
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<Tensor<1, dim>>          v(quadrature.size());
+    std::vector<Tensor<1, dim>>          v_face(face_quadrature.size());
+    std::vector<double>                  test(n), advective(n);
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto velocity_cell = same_cell(cell, velocity.dof_handler());
+          values.reinit(cell);
+          velocity_values.reinit(velocity_cell);
+          velocity_values[velocities].get_function_values(velocity.values(),
+                                                          v);
+          const double h = cell->diameter() / std::sqrt(double(dim));
+          cell_matrix    = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const double tau =
+                1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  advective[i] = v[q] * values.shape_grad(i, q);
+                  test[i]      = values.shape_value(i, q) + tau * advective[i];
+                }
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  cell_matrix(i, j) +=
+                    test[i] *
+                    (values.shape_value(j, q) / dt + 0.5 * advective[j]) *
+                    values.JxW(q);
+            }
+          // Inflow (v.n < 0): c = I, i.e. s = 0, weakly (upwind term).
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                face_values.reinit(cell, f);
+                velocity_face_values.reinit(velocity_cell, f);
+                velocity_face_values[velocities].get_function_values(
+                  velocity.values(), v_face);
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
+                  {
+                    const double inflow =
+                      -std::min(0., v_face[q] * face_values.normal_vector(q));
+                    for (unsigned int i = 0; i < n; ++i)
+                      for (unsigned int j = 0; j < n; ++j)
+                        cell_matrix(i, j) += 0.5 * inflow *
+                                             face_values.shape_value(i, q) *
+                                             face_values.shape_value(j, q) *
+                                             face_values.JxW(q);
+                  }
+              }
+          cell->get_dof_indices(indices);
+          constraints.distribute_local_to_global(cell_matrix, indices, matrix);
+        }
+    matrix.compress(VectorOperation::add);
+    preconditioner.initialize(matrix);
+  }
+
+  template <int dim>
+  std::vector<typename ConformationField<dim>::Vector>
+  ConformationField<dim>::assemble_rhs(const VelocityField<dim>  &velocity,
+                                       const double               dt,
+                                       const std::vector<Vector> &stage,
+                                       const bool average) const
+  {
+    const auto             list = components();
+    const unsigned int     m    = list.size();
+    const QGauss<dim>      quadrature(2);
+    const QGauss<dim - 1>  face_quadrature(2);
+    FEValues<dim>          values(fe,
+                         quadrature,
+                         update_values | update_gradients |
+                           update_JxW_values);
+    FEValues<dim>          velocity_values(velocity.fe(),
+                                  quadrature,
+                                  update_values | update_gradients);
+    FEFaceValues<dim>      face_values(fe,
+                                  face_quadrature,
+                                  update_values | update_normal_vectors |
+                                    update_JxW_values);
+    FEFaceValues<dim>      velocity_face_values(velocity.fe(),
+                                           face_quadrature,
+                                           update_values);
+    const FEValuesExtractors::Vector velocities(0);
+    const unsigned int               n = fe.n_dofs_per_cell();
+    const unsigned int               n_q = quadrature.size();
+    std::vector<dealii::Vector<double>> cell_rhs(m, dealii::Vector<double>(n));
+    std::vector<types::global_dof_index> indices(n);
+    std::vector<Tensor<1, dim>>          v(n_q), v_face(face_quadrature.size());
+    std::vector<Tensor<2, dim>>          grad_v(n_q);
+    std::vector<std::vector<double>>     s_old(m, std::vector<double>(n_q)),
+      s_stage(m, std::vector<double>(n_q)),
+      s_face(m, std::vector<double>(face_quadrature.size()));
+    std::vector<std::vector<Tensor<1, dim>>> grad_s_old(
+      m, std::vector<Tensor<1, dim>>(n_q));
+
+    std::vector<Vector> rhs(m);
+    for (Vector &r : rhs)
+      r.reinit(owned, comm);
+
+    const auto log_tensor = [&](const std::vector<std::vector<double>> &s,
+                                const unsigned int                      q) {
+      SymmetricTensor<2, 3> t;
+      for (unsigned int k = 0; k < m; ++k)
+        t[list[k].first][list[k].second] = s[k][q];
+      return t;
+    };
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          const auto velocity_cell = same_cell(cell, velocity.dof_handler());
+          values.reinit(cell);
+          velocity_values.reinit(velocity_cell);
+          velocity_values[velocities].get_function_values(velocity.values(),
+                                                          v);
+          velocity_values[velocities].get_function_gradients(
+            velocity.values(), grad_v);
+          for (unsigned int k = 0; k < m; ++k)
+            {
+              values.get_function_values(state[k], s_old[k]);
+              values.get_function_gradients(state[k], grad_s_old[k]);
+              values.get_function_values(stage[k], s_stage[k]);
+              cell_rhs[k] = 0;
+            }
+          const double h = cell->diameter() / std::sqrt(double(dim));
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const Tensor<2, 3> l = embed_velocity_gradient<dim>(grad_v[q]);
+              SymmetricTensor<2, 3> source =
+                model.log_rate(log_tensor(s_stage, q), l);
+              if (average)
+                source =
+                  0.5 * (source + model.log_rate(log_tensor(s_old, q), l));
+              const double tau =
+                1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
+              for (unsigned int k = 0; k < m; ++k)
+                {
+                  const double old_part =
+                    s_old[k][q] / dt - 0.5 * (v[q] * grad_s_old[k][q]) +
+                    source[list[k].first][list[k].second];
+                  for (unsigned int i = 0; i < n; ++i)
+                    cell_rhs[k](i) +=
+                      (values.shape_value(i, q) +
+                       tau * (v[q] * values.shape_grad(i, q))) *
+                      old_part * values.JxW(q);
+                }
+            }
+          // The old half of the inflow term, -(1/2) inflow s^n (s = 0 in).
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                face_values.reinit(cell, f);
+                velocity_face_values.reinit(velocity_cell, f);
+                velocity_face_values[velocities].get_function_values(
+                  velocity.values(), v_face);
+                for (unsigned int k = 0; k < m; ++k)
+                  face_values.get_function_values(state[k], s_face[k]);
+                for (const unsigned int q :
+                     face_values.quadrature_point_indices())
+                  {
+                    const double inflow =
+                      -std::min(0., v_face[q] * face_values.normal_vector(q));
+                    for (unsigned int k = 0; k < m; ++k)
+                      for (unsigned int i = 0; i < n; ++i)
+                        cell_rhs[k](i) -= 0.5 * inflow * s_face[k][q] *
+                                          face_values.shape_value(i, q) *
+                                          face_values.JxW(q);
+                  }
+              }
+          cell->get_dof_indices(indices);
+          for (unsigned int k = 0; k < m; ++k)
+            constraints.distribute_local_to_global(cell_rhs[k],
+                                                   indices,
+                                                   rhs[k]);
+        }
+    for (Vector &r : rhs)
+      r.compress(VectorOperation::add);
+    return rhs;
+  }
+
+  template <int dim>
+  unsigned int
+  ConformationField<dim>::solve(std::vector<Vector> &rhs,
+                                std::vector<Vector> &result)
+  {
+    unsigned int iterations = 0;
+    result.resize(rhs.size());
+    for (unsigned int k = 0; k < rhs.size(); ++k)
+      {
+        Vector solution(owned, comm);
+        solution = state[k]; // the old step as the initial guess
+        const double norm = rhs[k].l2_norm();
+        if (norm > 0)
+          {
+            SolverControl control(1000, 1e-12 * norm);
+            TrilinosWrappers::SolverGMRES solver(control);
+            try
+              {
+                solver.solve(matrix, solution, rhs[k], preconditioner);
+              }
+            catch (const SolverControl::NoConvergence &e)
+              {
+                std::ostringstream message;
+                message << "GMRES of the conformation transport did not "
+                           "converge in "
+                        << e.last_step << " iterations (residual "
+                        << std::scientific << std::setprecision(2)
+                        << e.last_residual << "); lower the time step";
+                throw std::runtime_error(message.str());
+              }
+            iterations = std::max(iterations, control.last_step());
+          }
+        else
+          solution = 0;
+        if (!std::isfinite(solution.l2_norm()))
+          throw std::runtime_error(
+            "the conformation tensor became non-finite; lower the time "
+            "step");
+        constraints.distribute(solution);
+        result[k].reinit(owned, relevant, comm);
+        result[k] = solution;
+      }
+    return iterations;
+  }
+
+  template <int dim>
+  unsigned int
+  ConformationField<dim>::advance(const VelocityField<dim> &velocity,
+                                  const double              dt)
+  {
+    assemble_matrix(velocity, dt);
+    // Heun: a predictor with the old source, then the average of the old
+    // and the predicted source; the transport operator is the same.
+    std::vector<Vector> rhs = assemble_rhs(velocity, dt, state, false);
+    std::vector<Vector> predicted;
+    unsigned int        iterations = solve(rhs, predicted);
+    rhs        = assemble_rhs(velocity, dt, predicted, true);
+    iterations = std::max(iterations, solve(rhs, advanced));
+    return iterations;
+  }
+
+  template <int dim>
+  void
+  ConformationField<dim>::add_state(StateTransfer<dim> &transfer)
+  {
+    std::vector<Vector *> vectors;
+    for (Vector &v : state)
+      vectors.push_back(&v);
+    transfer.add(dofs, vectors);
+  }
+
+  template class ConformationField<2>;
+  template class ConformationField<3>;
+} // namespace levelsinter
