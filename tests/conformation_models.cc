@@ -3,8 +3,8 @@
 // log-conformation form:
 //   conformation_models CASE FORM
 // CASE: shear-oldroyd, extension-oldroyd, shear-giesekus, relax-giesekus,
-// linear-xpp, forms-giesekus, forms-xpp; FORM: direct | log (ignored by
-// forms-*, which compare the two). Prints the errors, exits 1 above the
+// linear-xpp, forms-giesekus, forms-xpp, relax-step; FORM: direct | log
+// (ignored by forms-* and relax-step). Prints the errors, exits 1 above the
 // limit. Units: lambda = 1, G = 1 (so eta_p = 1).
 
 #include <levelsinter/mechanics/conformation_model.h>
@@ -237,6 +237,50 @@ namespace
     return report("XPP linear limit (relative shear stress)", error, 1e-5);
   }
 
+  // The relaxation step alone (ConformationModel::relax_log), from a
+  // sheared state c1 (Giesekus alpha = 0.3 start-up at Wi 5 to t = 1):
+  // Giesekus in one step of 3 lambda against the closed form through the
+  // eigenvalues (x -> x e / (1 + alpha x (1 - e))), XPP in 300 backward
+  // Euler steps of 0.01 against RK4 of the log form (first order: measured
+  // 0.0226 relative to |c - I|, limit 0.03), and one XPP step of 100 lambda
+  // must stay positive and damp c - I at least as backward Euler damps
+  // x' = -x / lambda, by 1 / (1 + dt / lambda) (measured 0.0494 from 5.4).
+  int
+  relax_step()
+  {
+    const auto c1 = evolve(giesekus(0.3), identity, shear(5.), 1., false);
+    const SymmetricTensor<2, 3> s1 = tensor_log(c1);
+    double                      error_giesekus = 0;
+    {
+      const double e      = std::exp(-3.);
+      const auto   pairs  = eigenvectors(c1);
+      SymmetricTensor<2, 3> exact;
+      for (const auto &[c, r] : pairs)
+        exact += (1 + (c - 1) * e / (1 + 0.3 * (c - 1) * (1 - e))) *
+                 symmetrize(outer_product(r, r));
+      error_giesekus =
+        (tensor_exp(giesekus(0.3).relax_log(s1, 3.)) - exact).norm();
+    }
+    SymmetricTensor<2, 3> s = s1;
+    for (unsigned int n = 0; n < 300; ++n)
+      s = xpp().relax_log(s, 0.01);
+    const auto reference = evolve(xpp(), c1, Tensor<2, 3>(), 3., true);
+    const double error_xpp =
+      (tensor_exp(s) - reference).norm() / (reference - identity).norm();
+    const double error_large =
+      (tensor_exp(xpp().relax_log(s1, 100.)) - identity).norm() /
+      ((c1 - identity).norm() / 101.);
+    std::cout << "Giesekus one step of 3 lambda: " << error_giesekus
+              << "; XPP 300 steps of 0.01 (relative to c - I): " << error_xpp
+              << "; XPP one step of 100: |c - I| / (|c1 - I| / 101) "
+              << error_large << std::endl;
+    return report("relaxation step (each error over its limit 1e-12, 0.03, "
+                  "1: the largest)",
+                  std::max({error_giesekus / 1e-12, error_xpp / 0.03,
+                            error_large}),
+                  1.);
+  }
+
   // Direct and log form on the same start-up, well into the nonlinear
   // range: shear at Wi = 5 and extension at Wi = 2 (Giesekus alpha = 0.1
   // and XPP); they must agree to the integration error.
@@ -276,6 +320,8 @@ main(int argc, char **argv)
     return relax_giesekus(log_form);
   if (which == "linear-xpp")
     return linear_xpp(log_form);
+  if (which == "relax-step")
+    return relax_step();
   if (which == "forms-giesekus")
     return forms(giesekus(0.1), "Giesekus alpha 0.1");
   if (which == "forms-xpp")

@@ -232,6 +232,7 @@ namespace levelsinter
   std::vector<typename ConformationField<dim>::Vector>
   ConformationField<dim>::assemble_rhs(const VelocityField<dim>  &velocity,
                                        const double               dt,
+                                       const std::vector<Vector> &old,
                                        const std::vector<Vector> &stage,
                                        const bool average) const
   {
@@ -290,8 +291,8 @@ namespace levelsinter
             velocity.values(), grad_v);
           for (unsigned int k = 0; k < m; ++k)
             {
-              values.get_function_values(state[k], s_old[k]);
-              values.get_function_gradients(state[k], grad_s_old[k]);
+              values.get_function_values(old[k], s_old[k]);
+              values.get_function_gradients(old[k], grad_s_old[k]);
               values.get_function_values(stage[k], s_stage[k]);
               cell_rhs[k] = 0;
             }
@@ -300,10 +301,10 @@ namespace levelsinter
             {
               const Tensor<2, 3> l = embed_velocity_gradient<dim>(grad_v[q]);
               SymmetricTensor<2, 3> source =
-                model.log_rate(log_tensor(s_stage, q), l);
+                model.log_deformation_rate(log_tensor(s_stage, q), l);
               if (average)
-                source =
-                  0.5 * (source + model.log_rate(log_tensor(s_old, q), l));
+                source = 0.5 * (source + model.log_deformation_rate(
+                                           log_tensor(s_old, q), l));
               const double tau =
                 1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
               for (unsigned int k = 0; k < m; ++k)
@@ -327,7 +328,7 @@ namespace levelsinter
                 velocity_face_values[velocities].get_function_values(
                   velocity.values(), v_face);
                 for (unsigned int k = 0; k < m; ++k)
-                  face_values.get_function_values(state[k], s_face[k]);
+                  face_values.get_function_values(old[k], s_face[k]);
                 for (const unsigned int q :
                      face_values.quadrature_point_indices())
                   {
@@ -349,6 +350,33 @@ namespace levelsinter
     for (Vector &r : rhs)
       r.compress(VectorOperation::add);
     return rhs;
+  }
+
+  template <int dim>
+  std::vector<typename ConformationField<dim>::Vector>
+  ConformationField<dim>::relaxed(const std::vector<Vector> &s,
+                                  const double               dt) const
+  {
+    const auto          list = components();
+    std::vector<Vector> values(list.size(), Vector(owned, comm));
+    for (const auto i : owned)
+      {
+        SymmetricTensor<2, 3> log_c;
+        for (unsigned int k = 0; k < list.size(); ++k)
+          log_c[list[k].first][list[k].second] = s[k](i);
+        log_c = model.relax_log(log_c, dt);
+        for (unsigned int k = 0; k < list.size(); ++k)
+          values[k][i] = log_c[list[k].first][list[k].second];
+      }
+    std::vector<Vector> result(list.size());
+    for (unsigned int k = 0; k < list.size(); ++k)
+      {
+        values[k].compress(VectorOperation::insert);
+        constraints.distribute(values[k]);
+        result[k].reinit(owned, relevant, comm);
+        result[k] = values[k];
+      }
+    return result;
   }
 
   template <int dim>
@@ -402,13 +430,18 @@ namespace levelsinter
                                   const double              dt)
   {
     assemble_matrix(velocity, dt);
-    // Heun: a predictor with the old source, then the average of the old
-    // and the predicted source; the transport operator is the same.
-    std::vector<Vector> rhs = assemble_rhs(velocity, dt, state, false);
+    // Strang splitting: half a step of relaxation at the nodes, the
+    // transport with the deformation terms, the other half. The transport
+    // is Heun: a predictor with the old source, then the average of the
+    // old and the predicted source (the operator is the same).
+    const std::vector<Vector> start = relaxed(state, dt / 2);
+    std::vector<Vector> rhs = assemble_rhs(velocity, dt, start, start, false);
     std::vector<Vector> predicted;
     unsigned int        iterations = solve(rhs, predicted);
-    rhs        = assemble_rhs(velocity, dt, predicted, true);
-    iterations = std::max(iterations, solve(rhs, advanced));
+    rhs        = assemble_rhs(velocity, dt, start, predicted, true);
+    std::vector<Vector> transported;
+    iterations = std::max(iterations, solve(rhs, transported));
+    advanced   = relaxed(transported, dt / 2);
     return iterations;
   }
 

@@ -117,6 +117,19 @@ namespace levelsinter
   ConformationModel::log_rate(const SymmetricTensor<2, 3> &s,
                               const Tensor<2, 3>          &grad_u) const
   {
+    const Eigenpairs            pairs = eigenpairs(s);
+    const SymmetricTensor<2, 3> c     = spectral(pairs, exponential);
+    const SymmetricTensor<2, 3> c_inverse =
+      spectral(pairs, [](const double mu) { return std::exp(-mu); });
+    // g(c) is a function of c, so g(c) c^{-1} is symmetric.
+    return log_deformation_rate(s, grad_u) -
+           symmetrize(Tensor<2, 3>(relaxation(c)) * Tensor<2, 3>(c_inverse));
+  }
+
+  SymmetricTensor<2, 3>
+  ConformationModel::log_deformation_rate(const SymmetricTensor<2, 3> &s,
+                                          const Tensor<2, 3> &grad_u) const
+  {
     const Eigenpairs pairs = eigenpairs(s);
     Tensor<2, 3>     rotation; // columns: eigenvectors of s (and c)
     std::array<double, 3> lambda;
@@ -148,13 +161,78 @@ namespace levelsinter
       }
     const Tensor<2, 3> spin = rotation * omega * transpose(rotation);
     const Tensor<2, 3> s_full(s);
-    const SymmetricTensor<2, 3> c = spectral(pairs, exponential);
-    const SymmetricTensor<2, 3> c_inverse =
-      spectral(pairs, [](const double mu) { return std::exp(-mu); });
-    // g(c) is a function of c, so g(c) c^{-1} is symmetric.
     return symmetrize(spin * s_full - s_full * spin +
-                      2. * rotation * b * transpose(rotation) -
-                      Tensor<2, 3>(relaxation(c)) * Tensor<2, 3>(c_inverse));
+                      2. * rotation * b * transpose(rotation));
+  }
+
+  std::array<double, 3>
+  ConformationModel::relaxation_of_eigenvalues(
+    const std::array<double, 3> &c) const
+  {
+    SymmetricTensor<2, 3> diagonal;
+    for (unsigned int i = 0; i < 3; ++i)
+      diagonal[i][i] = c[i];
+    const SymmetricTensor<2, 3> g = relaxation(diagonal);
+    return {{g[0][0], g[1][1], g[2][2]}};
+  }
+
+  SymmetricTensor<2, 3>
+  ConformationModel::relax_log(const SymmetricTensor<2, 3> &s,
+                               const double                 dt) const
+  {
+    Eigenpairs            pairs = eigenpairs(s);
+    std::array<double, 3> c;
+    for (unsigned int i = 0; i < 3; ++i)
+      c[i] = std::exp(pairs[i].first);
+    if (parameters.law == Law::giesekus)
+      {
+        const double e = std::exp(-dt / parameters.relaxation_time);
+        for (double &ci : c)
+          {
+            const double x = ci - 1;
+            ci = 1 + x * e / (1 + parameters.mobility * x * (1 - e));
+          }
+      }
+    else
+      {
+        // Backward Euler, c - c_old + dt g(c) = 0, by Newton's method with
+        // a difference Jacobian (3 x 3); the step is halved while it would
+        // leave the positive eigenvalues.
+        const std::array<double, 3> old = c;
+        for (unsigned int iteration = 0; iteration < 50; ++iteration)
+          {
+            const auto            g = relaxation_of_eigenvalues(c);
+            Tensor<1, 3>          residual;
+            Tensor<2, 3>          jacobian;
+            for (unsigned int i = 0; i < 3; ++i)
+              residual[i] = c[i] - old[i] + dt * g[i];
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                std::array<double, 3> shifted = c;
+                const double          d       = 1e-7 * std::max(1., c[j]);
+                shifted[j] += d;
+                const auto g_shifted = relaxation_of_eigenvalues(shifted);
+                for (unsigned int i = 0; i < 3; ++i)
+                  jacobian[i][j] =
+                    (i == j) + dt * (g_shifted[i] - g[i]) / d;
+              }
+            const Tensor<1, 3> update = invert(jacobian) * residual;
+            double             step   = 1;
+            while (step > 1e-6 && (c[0] - step * update[0] <= 0 ||
+                                   c[1] - step * update[1] <= 0 ||
+                                   c[2] - step * update[2] <= 0))
+              step /= 2;
+            for (unsigned int i = 0; i < 3; ++i)
+              c[i] -= step * update[i];
+            if (update.norm() <= 1e-13 * (c[0] + c[1] + c[2]))
+              break;
+          }
+      }
+    SymmetricTensor<2, 3> result;
+    for (unsigned int i = 0; i < 3; ++i)
+      result += std::log(c[i]) *
+                symmetrize(outer_product(pairs[i].second, pairs[i].second));
+    return result;
   }
 
   SymmetricTensor<2, 3>

@@ -21,14 +21,52 @@ namespace levelsinter
 
   template <int dim>
   HistoryTerms<dim>
-  ElasticSolidFluid<dim>::history(
-    const PhaseFractions          &f,
-    const SymmetricTensor<2, dim> &old_strain) const
+  ElasticSolidFluid<dim>::history(const PhaseFractions     &f,
+                                  const MaterialState<dim> &state) const
   {
     HistoryTerms<dim> terms;
-    terms.stress          = 2 * G * f.solid * old_strain;
-    terms.dilatation_rate = -f.solid * trace(old_strain) / dt;
+    terms.stress          = 2 * G * f.solid * state.old_strain;
+    terms.dilatation_rate = -f.solid * trace(state.old_strain) / dt;
     return terms;
+  }
+
+  template <int dim>
+  PhaseCoefficients
+  ViscoelasticPhases<dim>::coefficients(const PhaseFractions &f) const
+  {
+    // dt = 0 (a velocity at a fixed time): the polymer stress is all
+    // explicit, the instantaneous response.
+    PhaseCoefficients k;
+    k.a1 = 2 * ((eta_s + eta_p * dt / (lambda + dt)) * f.solid +
+                eta_f * (1 - f.solid));
+    k.a2 = 1;
+    k.compressibility = c * f.bulk_fluid / eta_f;
+    return k;
+  }
+
+  template <int dim>
+  HistoryTerms<dim>
+  ViscoelasticPhases<dim>::history(const PhaseFractions     &f,
+                                   const MaterialState<dim> &state) const
+  {
+    HistoryTerms<dim> terms;
+    terms.stress = lambda / (lambda + dt) * f.solid * state.polymer_stress;
+    return terms;
+  }
+
+  ConformationModel::Parameters
+  conformation_parameters(const PhaseLawParameters &law)
+  {
+    ConformationModel::Parameters p;
+    p.law = law.law == PhaseLawParameters::Law::xpp ?
+              ConformationModel::Law::xpp :
+              ConformationModel::Law::giesekus;
+    p.relaxation_time         = law.relaxation_time;
+    p.modulus                 = law.polymer_viscosity / law.relaxation_time;
+    p.mobility                = law.giesekus_mobility;
+    p.stretch_relaxation_time = law.xpp_stretch_relaxation_time;
+    p.arms                    = law.xpp_arms;
+    return p;
   }
 
   template <int dim>
@@ -41,6 +79,13 @@ namespace levelsinter
                                                       law.bulk_modulus,
                                                       flow.fluid_viscosity,
                                                       flow.fluid_compressibility);
+    if (law.is_viscoelastic())
+      return std::make_unique<ViscoelasticPhases<dim>>(
+        flow.solid_viscosity,
+        law.polymer_viscosity,
+        law.relaxation_time,
+        flow.fluid_viscosity,
+        flow.fluid_compressibility);
     return std::make_unique<NewtonianPhases<dim>>(flow.solid_viscosity,
                                                   flow.fluid_viscosity,
                                                   flow.fluid_compressibility);
@@ -48,6 +93,8 @@ namespace levelsinter
 
   template class ElasticSolidFluid<2>;
   template class ElasticSolidFluid<3>;
+  template class ViscoelasticPhases<2>;
+  template class ViscoelasticPhases<3>;
   template std::unique_ptr<PhaseLaw<2>>
   make_phase_law(const PhaseLawParameters &, const ViscousFlowParameters &);
   template std::unique_ptr<PhaseLaw<3>>

@@ -326,7 +326,15 @@ namespace levelsinter
     std::vector<double>                  kappa_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> old_strain_q(quadrature.size());
-    const bool history = phase_law.has_history();
+    std::vector<SymmetricTensor<2, dim>> polymer_stress_q(quadrature.size());
+    const bool history        = phase_law.has_history();
+    const bool polymer_stress = phase_law.has_polymer_stress();
+    if (polymer_stress &&
+        (conformation == nullptr ||
+         &conformation->dof_handler() != &alpha.dof_handler()))
+      throw std::logic_error(
+        "TwoPhaseStokes: a law with polymer stress needs a conformation "
+        "field on the level set's DoFs (set_conformation())");
 
     // The terms of the operator, chosen once for this assembly.
     std::vector<std::unique_ptr<StokesAssembler<dim>>> assemblers;
@@ -402,6 +410,8 @@ namespace levelsinter
               values[velocity].get_function_symmetric_gradients(
                 old_displacement, old_strain_q);
             }
+          if (polymer_stress)
+            conformation->stress_values(level_set_values, polymer_stress_q);
           // The Schur approximation weighs the pressure mass with the
           // cell-mean viscosity (Grinevich & Olshanskii 2009): with the
           // pointwise 1/eta of the smeared interface the outer iterations
@@ -413,9 +423,12 @@ namespace levelsinter
                 heaviside.solid_fraction(alpha_q[k]),
                 1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
               data.law[k] = phase_law.coefficients(fractions);
-              if (history)
-                data.history[k] =
-                  phase_law.history(fractions, old_strain_q[k]);
+              if (history || polymer_stress)
+                data.history[k] = phase_law.history(
+                  fractions,
+                  {history ? old_strain_q[k] : SymmetricTensor<2, dim>(),
+                   polymer_stress ? polymer_stress_q[k] :
+                                    SymmetricTensor<2, dim>()});
               data.a1_cell += data.law[k].a1 / n_q;
               data.tau[k] = settings.stabilisation_constant * data.law[k].a2 *
                             h * h / data.law[k].a1;

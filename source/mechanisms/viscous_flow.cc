@@ -29,12 +29,17 @@ namespace levelsinter
     , band_level(band_level)
     , timer(timer)
     , phases(make_phase_law<dim>(law, parameters))
+    , zero_shear_viscosity(parameters.solid_viscosity +
+                           (law.is_viscoelastic() ? law.polymer_viscosity : 0))
   {
     if (phases->has_history())
       throw std::runtime_error(
         "entry 'Phase law/Law': viscous flow moves the particles with "
         "their Newtonian velocity and needs 'newtonian' (the elastic solid "
         "belongs to volume diffusion)");
+    if (phases->has_polymer_stress())
+      conformation_model =
+        std::make_unique<ConformationModel>(conformation_parameters(law));
   }
 
   template <int dim>
@@ -53,6 +58,17 @@ namespace levelsinter
     // builds after the mechanisms: create the operator on first use.
     operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
     operator_->setup_dofs();
+    if (conformation_model)
+      {
+        // On the level set's DoFs, which outlive the mesh changes; the
+        // state comes back through add_state().
+        if (!conformation)
+          conformation = std::make_unique<ConformationField<dim>>(
+            alpha.dof_handler(), *conformation_model);
+        conformation->setup();
+        operator_->set_conformation(*conformation);
+        conformation_time = -1;
+      }
 
     if (settings.form == Form::csf_curvature)
       {
@@ -122,6 +138,9 @@ namespace levelsinter
         TimerOutput::Scope scope(timer, "viscous flow: curvature");
         update_curvature(alpha);
       }
+    if (conformation && conformation_time >= 0 && t > conformation_time)
+      commit_conformation(alpha);
+    phases->set_time_step(dt);
     {
       TimerOutput::Scope scope(timer, "viscous flow: assembly");
       operator_->assemble(alpha,
@@ -147,6 +166,88 @@ namespace levelsinter
         value[c] = solution(cell->vertex_dof_index(v, c));
       return value;
     });
+
+    // The melt's conformation follows the velocity just solved for (the
+    // scene's velocity so far: this and any prescribed one).
+    if (conformation && dt > 0)
+      {
+        TimerOutput::Scope scope(timer, "viscous flow: conformation");
+        conformation_iterations = conformation->advance(velocity, dt);
+        conformation_time       = t;
+      }
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::commit_conformation(const LevelSetField<dim> &alpha)
+  {
+    conformation->commit();
+    const double saturation = 0.999 * filter.saturation();
+    conformation->fade([&](const types::global_dof_index i) {
+      return alpha.alpha()(i) < saturation ? 1. : 0.;
+    });
+    conformation_time = -1;
+
+    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(),
+                                        alpha.dof_handler().get_communicator());
+    const auto         &s = conformation->log_conformation();
+    std::vector<double> values(s.size());
+    double              largest = 0;
+    for (const auto i : alpha.locally_owned())
+      {
+        for (unsigned int k = 0; k < s.size(); ++k)
+          values[k] = s[k](i);
+        owned(i) = trace(ConformationField<dim>::conformation(values));
+        largest  = std::max(largest, double(owned(i)));
+      }
+    owned.compress(VectorOperation::insert);
+    alpha.constraints().distribute(owned);
+    trace_c.reinit(alpha.locally_owned(),
+                   alpha.locally_relevant(),
+                   alpha.dof_handler().get_communicator());
+    trace_c     = owned;
+    max_trace_c = Utilities::MPI::max(largest,
+                                      alpha.dof_handler().get_communicator());
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::add_state(const LevelSetField<dim> &alpha,
+                              StateTransfer<dim>       &transfer)
+  {
+    if (!conformation)
+      return;
+    // The time loop adapts the mesh (or checkpoints) after an accepted
+    // step.
+    if (conformation_time >= 0)
+      commit_conformation(alpha);
+    conformation->add_state(transfer);
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  ViscousFlow<dim>::metric_names() const
+  {
+    std::vector<std::string> names = {"stokes_iterations", "stokes_solve_cpu"};
+    if (conformation_model)
+      {
+        names.emplace_back("conformation_iterations");
+        names.emplace_back("max_trace_c");
+      }
+    return names;
+  }
+
+  template <int dim>
+  std::vector<double>
+  ViscousFlow<dim>::metric_values() const
+  {
+    std::vector<double> values = {double(last_iterations), last_solve_cpu};
+    if (conformation_model)
+      {
+        values.push_back(conformation_iterations);
+        values.push_back(max_trace_c);
+      }
+    return values;
   }
 
   template <int dim>
@@ -168,6 +269,10 @@ namespace levelsinter
       data_out.add_data_vector(alpha.dof_handler(),
                                kappa,
                                "viscous_flow_curvature");
+    if (trace_c.size() == alpha.dof_handler().n_dofs())
+      data_out.add_data_vector(alpha.dof_handler(),
+                               trace_c,
+                               "viscoelastic_trace_c");
   }
 
   template <int dim>
@@ -215,8 +320,11 @@ namespace levelsinter
         parameters.surface_tension == 0 ||
         parameters.semi_implicit_surface_tension)
       return std::numeric_limits<double>::infinity();
-    return parameters.capillary_time_step_factor *
-           parameters.solid_viscosity * h_min / parameters.surface_tension;
+    // A viscoelastic melt: its zero-shear viscosity eta_s + eta_p. Where
+    // the elastic response is softer over a step (dt < lambda), a step
+    // that grows the interface is rejected and halved (check_step()).
+    return parameters.capillary_time_step_factor * zero_shear_viscosity *
+           h_min / parameters.surface_tension;
   }
 
   template class ViscousFlow<2>;

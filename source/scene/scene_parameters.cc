@@ -208,6 +208,14 @@ namespace levelsinter
                      "surface energy gamma that loads the elastic solid");
       }
 
+    // A viscoelastic melt flows: its polymer stress is part of the viscous
+    // flow problem.
+    if (phase_law.is_viscoelastic() && !viscous_flow.enabled)
+      fail_entry("Phase law/Law",
+                 "a viscoelastic law (giesekus, xpp) needs 'Viscous "
+                 "flow/Enabled = true': the melt's polymer stress enters "
+                 "the viscous flow problem");
+
     // The band is located by reading distances back through the filter,
     // which saturates at E; at E itself every saturated node reads as "in
     // the band", which refines the whole box, so on an adaptive mesh the

@@ -29,9 +29,11 @@ namespace levelsinter
    * six). advance() solves the conformation equation (viscoelastic seed,
    * Eq. 6-7) in the Eulerian frame,
    *   ds/dt + v . grad s = r(s, grad v)   (ConformationModel::log_rate),
-   * the transport Crank-Nicolson with SUPG (one matrix for all
-   * components), the source explicit in a two-stage Heun step, so the
-   * step is second order. At inflow boundaries c = I is imposed weakly.
+   * by Strang splitting: the relaxation at the nodes (stable for any step,
+   * ConformationModel::relax_log()) around the transport, Crank-Nicolson
+   * with SUPG (one matrix for all components) with the deformation terms
+   * explicit in a two-stage Heun step; second order. At inflow boundaries
+   * c = I is imposed weakly.
    */
   template <int dim>
   class ConformationField
@@ -111,13 +113,20 @@ namespace levelsinter
     void
     assemble_matrix(const VelocityField<dim> &velocity, const double dt);
 
-    /** Right-hand sides for the source evaluated at @p stage (averaged
-     * with the old step's source when @p average). */
+    /** Right-hand sides of the transport from @p old, the deformation
+     * source evaluated at @p stage (averaged with the source at @p old when
+     * @p average). */
     std::vector<Vector>
     assemble_rhs(const VelocityField<dim>  &velocity,
                  const double               dt,
+                 const std::vector<Vector> &old,
                  const std::vector<Vector> &stage,
                  const bool                 average) const;
+
+    /** @p s after relaxing alone for @p dt at every node
+     * (ConformationModel::relax_log()). */
+    std::vector<Vector>
+    relaxed(const std::vector<Vector> &s, const double dt) const;
 
     unsigned int
     solve(std::vector<Vector> &rhs, std::vector<Vector> &result);

@@ -3,6 +3,8 @@
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
+
 namespace levelsinter
 {
   using namespace dealii;
@@ -66,6 +68,24 @@ namespace levelsinter
     SymmetricTensor<2, 3>
     log_rate(const SymmetricTensor<2, 3> &s, const Tensor<2, 3> &grad_u) const;
 
+    /** The deformation part of log_rate(), without the relaxation:
+     * Omega s - s Omega + 2 B. */
+    SymmetricTensor<2, 3>
+    log_deformation_rate(const SymmetricTensor<2, 3> &s,
+                         const Tensor<2, 3>          &grad_u) const;
+
+    /**
+     * s = log c after relaxing alone (dc/dt = -g(c)) for @p dt. g(c) is a
+     * function of c, so the axes stay and each eigenvalue relaxes:
+     * Giesekus exactly, x = c_i - 1 -> x e / (1 + alpha x (1 - e)),
+     * e = exp(-dt / lambda); XPP (eigenvalues coupled through tr c) by a
+     * backward Euler step solved with Newton's method. Both are stable for
+     * any dt, which the stiff relaxation of a nearly Newtonian melt
+     * (lambda << dt) needs.
+     */
+    SymmetricTensor<2, 3>
+    relax_log(const SymmetricTensor<2, 3> &s, const double dt) const;
+
     /** tau = G (c - I). */
     SymmetricTensor<2, 3>
     stress(const SymmetricTensor<2, 3> &c) const;
@@ -75,6 +95,11 @@ namespace levelsinter
     polymer_viscosity() const;
 
   private:
+    /** g(c) in the principal frame: the relaxation rate of each
+     * eigenvalue @p c of c. */
+    std::array<double, 3>
+    relaxation_of_eigenvalues(const std::array<double, 3> &c) const;
+
     Parameters parameters;
   };
 

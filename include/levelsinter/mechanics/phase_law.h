@@ -2,6 +2,7 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
+#include <levelsinter/mechanics/conformation_model.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -38,6 +39,18 @@ namespace levelsinter
   };
 
   /**
+   * What a law with memory reads at one point: the strain of the previous
+   * step's displacement (elastic solid) and the polymer stress
+   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts).
+   */
+  template <int dim>
+  struct MaterialState
+  {
+    SymmetricTensor<2, dim> old_strain;
+    SymmetricTensor<2, dim> polymer_stress;
+  };
+
+  /**
    * Where a point lies: the smoothed solid fraction H_s (Eq. 102, 1 in the
    * particles) and the fraction of bulk atmosphere, the same ramp shifted by
    * 2E into the fluid so that it vanishes across the transition zone.
@@ -64,18 +77,25 @@ namespace levelsinter
     virtual PhaseCoefficients
     coefficients(const PhaseFractions &fractions) const = 0;
 
-    /** Whether history() is nonzero (then the operator needs the
-     * displacement of the previous step). */
+    /** Whether history() reads the strain of the previous step's
+     * displacement (then the operator keeps the displacement). */
     virtual bool
     has_history() const
     {
       return false;
     }
 
-    /** The history right-hand sides for the strain @p old_strain of the
-     * previous step's displacement. */
+    /** Whether history() reads the polymer stress (then the operator needs
+     * a conformation field). */
+    virtual bool
+    has_polymer_stress() const
+    {
+      return false;
+    }
+
+    /** The history right-hand sides for the state @p state at the point. */
     virtual HistoryTerms<dim>
-    history(const PhaseFractions &, const SymmetricTensor<2, dim> &) const
+    history(const PhaseFractions &, const MaterialState<dim> &) const
     {
       return {};
     }
@@ -162,8 +182,8 @@ namespace levelsinter
     }
 
     HistoryTerms<dim>
-    history(const PhaseFractions          &f,
-            const SymmetricTensor<2, dim> &old_strain) const override;
+    history(const PhaseFractions     &f,
+            const MaterialState<dim> &state) const override;
 
     void
     set_time_step(const double time_step) override
@@ -178,6 +198,70 @@ namespace levelsinter
     double c;
     double dt = 0;
   };
+
+  /**
+   * Viscoelastic particles (the viscoelastic seed, Eq. 4-7): solvent
+   * viscosity eta_s plus the polymer stress tau = G (c - I) of a
+   * conformation field, in a Newtonian atmosphere (eta_f, compressibility
+   * as NewtonianPhases). The polymer stress enters implicitly through its
+   * linearisation about the state at rest, lambda tau' + tau = 2 eta_p D,
+   * taken backward in time over the step:
+   *   tau^{n+1} = lambda / (lambda + dt) tau^n
+   *               + 2 eta_p dt / (lambda + dt) D(v^{n+1}),
+   * so the particles get the viscosity eta_s + eta_p dt / (lambda + dt)
+   * and the explicit stress lambda / (lambda + dt) H_s tau^n. The full
+   * nonlinear model then updates c with v^{n+1} (ConformationField). At
+   * lambda -> 0 (eta_p = G lambda fixed) this is the Newtonian law with
+   * eta_s + eta_p whatever dt; at lambda -> infinity the elastic rate form
+   * (viscosity G dt, as ElasticSolidFluid).
+   */
+  template <int dim>
+  class ViscoelasticPhases : public PhaseLaw<dim>
+  {
+  public:
+    ViscoelasticPhases(const double solvent_viscosity,
+                       const double polymer_viscosity,
+                       const double relaxation_time,
+                       const double fluid_viscosity,
+                       const double fluid_compressibility)
+      : eta_s(solvent_viscosity)
+      , eta_p(polymer_viscosity)
+      , lambda(relaxation_time)
+      , eta_f(fluid_viscosity)
+      , c(fluid_compressibility)
+    {}
+
+    PhaseCoefficients
+    coefficients(const PhaseFractions &f) const override;
+
+    bool
+    has_polymer_stress() const override
+    {
+      return true;
+    }
+
+    HistoryTerms<dim>
+    history(const PhaseFractions     &f,
+            const MaterialState<dim> &state) const override;
+
+    void
+    set_time_step(const double time_step) override
+    {
+      dt = time_step;
+    }
+
+  private:
+    double eta_s;
+    double eta_p;
+    double lambda;
+    double eta_f;
+    double c;
+    double dt = 0;
+  };
+
+  /** The conformation model of a viscoelastic 'Phase law'. */
+  ConformationModel::Parameters
+  conformation_parameters(const PhaseLawParameters &law);
 
   /**
    * The law a scene asks for ('Phase law/Law'), with the atmosphere of

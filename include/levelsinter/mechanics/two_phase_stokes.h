@@ -15,6 +15,7 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
+#include <levelsinter/mechanics/conformation_field.h>
 #include <levelsinter/mechanics/phase_law.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -132,6 +133,16 @@ namespace levelsinter
     remove_rigid_motion(const LevelSetField<dim> &alpha);
 
     /**
+     * The conformation field whose polymer stress a viscoelastic law reads
+     * (PhaseLaw::has_polymer_stress()); it lives on the level set's DoFs.
+     */
+    void
+    set_conformation(const ConformationField<dim> &field)
+    {
+      conformation = &field;
+    }
+
+    /**
      * Displacement of a law with history (PhaseLaw::has_history()):
      * u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity.
      * Call once per accepted step, after solve().
@@ -185,6 +196,7 @@ namespace levelsinter
     Settings                  settings;
     const FreeRigidMotions    free_motions;
     const PhaseLaw<dim>      &phase_law;
+    const ConformationField<dim> *conformation = nullptr;
     FESystem<dim>             finite_element;
     DoFHandler<dim>           dofs;
     std::vector<IndexSet>     owned_partitioning;

@@ -66,8 +66,9 @@ namespace levelsinter
     }
 
     /**
-     * Explicit capillary limit dt <= c eta_s h_min / gamma; none when the
-     * surface tension is semi-implicit.
+     * Explicit capillary limit dt <= c eta h_min / gamma (eta: the
+     * particles' zero-shear viscosity); none when the surface tension is
+     * semi-implicit.
      */
     double
     time_step_limit(const LevelSetField<dim> &alpha) const override;
@@ -90,17 +91,19 @@ namespace levelsinter
     add_output_fields(const LevelSetField<dim> &alpha,
                       DataOut<dim>             &data_out) const override;
 
+    /** The conformation tensor of a viscoelastic melt (its committed
+     * state) travels across mesh adaptation. */
+    void
+    add_state(const LevelSetField<dim> &alpha,
+              StateTransfer<dim>       &transfer) override;
+
+    /** Stokes iterations and CPU seconds; for a viscoelastic melt also the
+     * conformation solves' GMRES iterations and the largest tr c. */
     std::vector<std::string>
-    metric_names() const override
-    {
-      return {"stokes_iterations", "stokes_solve_cpu"};
-    }
+    metric_names() const override;
 
     std::vector<double>
-    metric_values() const override
-    {
-      return {double(last_iterations), last_solve_cpu};
-    }
+    metric_values() const override;
 
     /**
      * Use @p kappa (evaluated at the level-set nodes) instead of the
@@ -132,16 +135,33 @@ namespace levelsinter
     void
     update_curvature(const LevelSetField<dim> &alpha);
 
+    /** The conformation of the step solved last becomes the state (the
+     * step was accepted); c relaxes to I beyond the filtered band in the
+     * atmosphere, which carries no polymer. */
+    void
+    commit_conformation(const LevelSetField<dim> &alpha);
+
     const ViscousFlowParameters          parameters;
     const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                 filter;
     const unsigned int                   band_level;
     TimerOutput                         &timer;
     const std::unique_ptr<PhaseLaw<dim>> phases;
+    // eta_s, plus eta_p for a viscoelastic melt: the capillary limit's.
+    const double zero_shear_viscosity;
     std::unique_ptr<TwoPhaseStokes<dim>> operator_;
     std::unique_ptr<MixedCurvatureSolver<dim>> curvature_solver;
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;
+    // Viscoelastic melts only: the conformation tensor, the time of the
+    // step it was advanced for but not committed (-1: none), tr c at the
+    // nodes for the output and its maximum.
+    std::unique_ptr<ConformationModel>          conformation_model;
+    std::unique_ptr<ConformationField<dim>>     conformation;
+    double                                      conformation_time = -1;
+    unsigned int                                conformation_iterations = 0;
+    TrilinosWrappers::MPI::Vector               trace_c;
+    double                                      max_trace_c = 3;
     double                               h_min           = 0;
     // Interface measure at the start of the step from step_start_time, kept
     // for the CFL re-choice and the retries of that step.

@@ -26,9 +26,24 @@ namespace levelsinter
     enum class Law
     {
       newtonian,
-      elastic_solid
+      elastic_solid,
+      giesekus,
+      xpp
     } law = Law::newtonian;
-    double      shear_modulus = 156e9;       // G (Pa)
-    double      bulk_modulus  = 260e9;       // K (Pa)
+    double shear_modulus = 156e9; // G (Pa)
+    double bulk_modulus  = 260e9; // K (Pa)
+    // Viscoelastic melts (the viscoelastic seed, Eq. 4-7); the solvent
+    // viscosity is Viscous flow/Solid viscosity.
+    double relaxation_time             = 1;   // lambda (s)
+    double polymer_viscosity           = 1;   // eta_p = G lambda (Pa s)
+    double giesekus_mobility           = 0.1; // alpha
+    double xpp_stretch_relaxation_time = 0.5; // lambda_s (s)
+    double xpp_arms                    = 2;   // q
+
+    bool
+    is_viscoelastic() const
+    {
+      return law == Law::giesekus || law == Law::xpp;
+    }
   };
 } // namespace levelsinter
