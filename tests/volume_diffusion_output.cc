@@ -8,7 +8,8 @@
 //   - its values, read back from the patches of the same DataOut fields,
 //     equal the velocity the level set was carried with (volume diffusion
 //     is the only mechanism; the volume correction is a field of its own),
-//     to rounding (relative 1e-10 of the largest speed);
+//     to rounding (relative 1e-6 of the largest speed: patches hold
+//     floats);
 //   - at the top of the neck (the midpoint plus the neck radius along y)
 //     it points out of the solid (+y): the neck grows.
 // Exit code 0 only if every check passes.
@@ -130,10 +131,10 @@ main(int argc, char **argv)
           {
             for (unsigned int d = 0; d < 2; ++d)
               {
+                const double carried = patch.data(v + d, k);
                 difference = std::max(difference,
-                                      std::abs(patch.data(v + d, k) -
-                                               patch.data(w + d, k)));
-                speed = std::max(speed, std::abs(patch.data(v + d, k)));
+                                      std::abs(carried - patch.data(w + d, k)));
+                speed = std::max(speed, std::abs(carried));
               }
             if (const double r = patch.vertices[k].distance(neck_top);
                 r < nearest)
@@ -155,7 +156,7 @@ main(int argc, char **argv)
                   << std::endl;
       ok &= check(root,
                   "the written field is the carried velocity",
-                  speed > 0 && difference <= 1e-10 * speed);
+                  speed > 0 && difference <= 1e-6 * speed);
       ok &= check(root,
                   "it points out of the solid at the neck",
                   neck_speed > 0);
