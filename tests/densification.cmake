@@ -112,3 +112,33 @@ add_test(NAME volume_diffusion_stiff_1e-7_vs_1e-5
     volume_diffusion_mechanics_iterations centre_distance_change)
 set_tests_properties(volume_diffusion_stiff_1e-7_vs_1e-5 PROPERTIES
   FIXTURES_REQUIRED "vd_stiff_1e-5;vd_stiff_1e-7")
+
+# Extreme geometries (validation-long; doc/validation.md): a near-tangent
+# contact x0/R = 0.01 (centres 0.39998 apart) and radii 1:4 (R = 0.2 and
+# 0.05, x0/R_small = 0.22) at h = 1/128, and the 1:4 pair with the two
+# remedies of the unsourced-cells warning (h = 1/256; lambda = 3 cells).
+set(VD_UNEQUAL "Geometry/Particles=0.45, 0.5, 0.2; 0.698472, 0.5, 0.05")
+add_test(NAME study_vd_tangent_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none"
+    --set "Geometry/Particles=0.30001, 0.5, 0.2; 0.69999, 0.5, 0.2"
+    --set "Output/Directory=vd_tangent" ${VD_GRAINS})
+add_test(NAME study_vd_unequal_1_4_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "${VD_UNEQUAL}"
+    --set "Output/Directory=vd_unequal_1_4" ${VD_GRAINS})
+add_test(NAME study_vd_unequal_1_4_h256_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "${VD_UNEQUAL}"
+    --set "Mesh refinement/Maximum level=6" --set "Time/Maximum steps=2"
+    --set "Output/Directory=vd_unequal_1_4_h256" ${VD_GRAINS})
+add_test(NAME study_vd_unequal_1_4_lambda3_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "${VD_UNEQUAL}"
+    --set "Volume diffusion/Interior offset=3" --set "Time/End time=0.0028"
+    --set "Output/Directory=vd_unequal_1_4_lambda3" ${VD_GRAINS})
+set_tests_properties(study_vd_tangent_2d study_vd_unequal_1_4_2d
+  study_vd_unequal_1_4_h256_2d study_vd_unequal_1_4_lambda3_2d
+  PROPERTIES LABELS validation-long)
+set_tests_properties(study_vd_unequal_1_4_2d PROPERTIES
+  PASS_REGULAR_EXPRESSION "interface cells lie where the solid is thinner")

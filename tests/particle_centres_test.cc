@@ -25,9 +25,9 @@
 
 #include <levelsinter/analysis/particle_centres.h>
 #include <levelsinter/analysis/reference_shapes.h>
-#include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/level_set/interface_measures.h>
 
+#include "refined_level_set.h"
 #include "study_support.h"
 #include "study_table.h"
 
@@ -73,19 +73,8 @@ namespace
       {
         const UnionOfBalls<dim> phi(particles(s));
         parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
-        make_box_mesh(tria, domain);
-        tria.refine_global(2);
-        for (unsigned int l = 2; l < level; ++l)
-          {
-            for (const auto &cell : tria.active_cell_iterators())
-              if (cell->is_locally_owned() &&
-                  std::abs(phi.value(cell->center())) < cell->diameter())
-                cell->set_refine_flag();
-            tria.execute_coarsening_and_refinement();
-          }
-        LevelSetField<dim> level_set(tria);
-        level_set.setup_dofs();
-        level_set.interpolate(phi);
+        LevelSetField<dim>                        level_set(tria);
+        study::build_refined_level_set(tria, level_set, domain, phi, level);
         const double delta =
           interface_measures::shape_error(level_set, phi).max_distance;
         if (s == 0)
