@@ -117,12 +117,14 @@ main(int argc, char **argv)
       data_out.build_patches();
       const auto         names = data_out.get_dataset_names();
       const unsigned int v     = first_index(names, "velocity");
-      const unsigned int w     = first_index(names, "volume_diffusion_velocity");
+      const unsigned int w =
+        first_index(names, "volume_diffusion_velocity");
 
       const auto &particles = parameters.geometry.particles;
       const Point<2> c1(particles[0][0], particles[0][1]);
       const Point<2> c2(particles[1][0], particles[1][1]);
-      const double   x = neck_measures::neck_radius(simulation.level_set(), c1, c2);
+      const double   x =
+        neck_measures::neck_radius(simulation.level_set(), c1, c2);
       const Point<2> neck_top = 0.5 * (c1 + c2) + Point<2>(0, x);
 
       double difference = 0, speed = 0, nearest = 1e300, neck_vy = 0;

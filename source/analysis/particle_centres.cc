@@ -104,7 +104,8 @@ namespace levelsinter
         for (unsigned int d = 0; d < dim; ++d)
           result[i][d] = nan;
     // Mirror images, across up to dim planes (a corner image).
-    const auto reflect = [](Point<dim> p, const std::pair<unsigned int, double> &plane) {
+    const auto reflect = [](Point<dim>                             p,
+                            const std::pair<unsigned int, double> &plane) {
       p[plane.first] = 2 * plane.second - p[plane.first];
       return p;
     };

@@ -483,8 +483,9 @@ namespace levelsinter
                 if (!particle_centres)
                   particle_centres = std::make_unique<ParticleCentres<dim>>(
                     particles, scene.domain, comm);
+                const auto &necks = packing_analysis->necks();
                 for (const double value :
-                     particle_centres->measure(alpha, packing_analysis->necks()))
+                     particle_centres->measure(alpha, necks))
                   row.push_back(value);
               }
           }
