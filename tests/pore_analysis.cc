@@ -28,6 +28,7 @@
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/grid/box_mesh.h>
 
+#include "refined_level_set.h"
 #include "study_table.h"
 
 #include <chrono>
@@ -40,8 +41,7 @@ namespace
   using study::check;
   using study::Table;
 
-  // The unit box, refined where |phi| < the cell diameter (every cell the
-  // zero level set crosses) up to @p level; alpha = phi at the vertices.
+  // The unit box, refined around the interface up to @p level.
   template <int dim>
   void
   build(parallel::distributed::Triangulation<dim> &tria,
@@ -53,18 +53,7 @@ namespace
     domain.lower_corner = std::vector<double>(dim, 0.);
     domain.upper_corner = std::vector<double>(dim, 1.);
     domain.subdivisions = std::vector<unsigned int>(dim, 1);
-    make_box_mesh(tria, domain);
-    tria.refine_global(2);
-    for (unsigned int l = 2; l < level; ++l)
-      {
-        for (const auto &cell : tria.active_cell_iterators())
-          if (cell->is_locally_owned() &&
-              std::abs(phi.value(cell->center())) < cell->diameter())
-            cell->set_refine_flag();
-        tria.execute_coarsening_and_refinement();
-      }
-    level_set.setup_dofs();
-    level_set.interpolate(phi);
+    study::build_refined_level_set(tria, level_set, domain, phi, level);
   }
 
   void

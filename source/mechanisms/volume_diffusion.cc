@@ -204,6 +204,22 @@ namespace levelsinter
     data_out.add_data_vector(alpha.dof_handler(),
                              extension.normal_gradient(),
                              "volume_diffusion_xi");
+    // v = -C_v xi N (Eq. 112) as add_velocity() hands it over, before the
+    // volume correction; DataOut reads it when it builds the patches.
+    output_velocity = std::make_unique<VelocityField<dim>>(
+      dynamic_cast<const parallel::distributed::Triangulation<dim> &>(
+        alpha.dof_handler().get_triangulation()));
+    output_velocity->setup_dofs();
+    output_velocity->add_vertex_values(
+      alpha.dof_handler(), [&](const auto &cell, const unsigned int v) {
+        return extension.velocity(cell->vertex_dof_index(v, 0), coefficient);
+      });
+    data_out.add_data_vector(
+      output_velocity->dof_handler(),
+      output_velocity->values(),
+      std::vector<std::string>(dim, "volume_diffusion_velocity"),
+      std::vector<Interpretation>(
+        dim, DataComponentInterpretation::component_is_part_of_vector));
   }
 
   template class VolumeDiffusion<2>;

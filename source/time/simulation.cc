@@ -476,6 +476,18 @@ namespace levelsinter
                 std::make_unique<PackingAnalysis<dim>>(scene, comm);
             for (const double value : packing_analysis->measure(step, t, alpha))
               row.push_back(value);
+            // Densification: the approach of the particle centres.
+            if (scene.geometry.shape == GeometryParameters::Shape::particles &&
+                particles.size() >= 2)
+              {
+                if (!particle_centres)
+                  particle_centres = std::make_unique<ParticleCentres<dim>>(
+                    particles, scene.domain, comm);
+                const auto &necks = packing_analysis->necks();
+                for (const double value :
+                     particle_centres->measure(alpha, necks))
+                  row.push_back(value);
+              }
           }
         if (!metrics)
           {
@@ -499,6 +511,9 @@ namespace levelsinter
                 columns.push_back(name);
             if (packing_analysis)
               for (const auto &name : packing_analysis->column_names())
+                columns.push_back(name);
+            if (particle_centres)
+              for (const auto &name : particle_centres->column_names())
                 columns.push_back(name);
             metrics = std::make_unique<MetricsLog>(scene.output.directory +
                                                      "/metrics.csv",

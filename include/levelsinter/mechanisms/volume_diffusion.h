@@ -62,7 +62,7 @@ namespace levelsinter
     add_state(const LevelSetField<dim> &alpha,
               StateTransfer<dim>       &transfer) override;
 
-    /** Pressure, xi and displacement of the last step. */
+    /** Pressure, xi, displacement and velocity of the last step. */
     void
     add_output_fields(const LevelSetField<dim> &alpha,
                       DataOut<dim>             &data_out) const override;
@@ -122,5 +122,8 @@ namespace levelsinter
     unsigned int mechanics_iterations = 0;
     unsigned int xi_iterations        = 0;
     bool         warned_unsourced     = false;
+    // The velocity of the last step for the field output, which keeps a
+    // reference to it until the patches are built.
+    mutable std::unique_ptr<VelocityField<dim>> output_velocity;
   };
 } // namespace levelsinter

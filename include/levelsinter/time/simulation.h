@@ -6,6 +6,7 @@
 #include <deal.II/distributed/tria.h>
 
 #include <levelsinter/analysis/packing_analysis.h>
+#include <levelsinter/analysis/particle_centres.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
@@ -203,6 +204,7 @@ namespace levelsinter
     std::unique_ptr<MetricsLog>               metrics;
     // Made at the first metrics row if the scene asks for it.
     std::unique_ptr<PackingAnalysis<dim>>     packing_analysis;
+    std::unique_ptr<ParticleCentres<dim>>     particle_centres;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;
