@@ -1,0 +1,99 @@
+# Studies of volume diffusion behind doc/validation.md ("Volume diffusion:
+# two equal grains (Table 7, Fig. 44)", "Volume diffusion: unequal grains
+# (Fig. 45)"). Label validation-long, not in CI (except the last test);
+# each writes the CSV named by --csv. VD_GRAINS is defined in
+# volume_diffusion_mechanism.cmake.
+
+# --- Two equal grains, R = 0.1 to 0.4 (Fig. 44) ---------------------------
+# The scene (R = 0.2, box 1, h = 1/128) scaled by s = R / 0.2: box, centres,
+# filter thickness and refined band times s, so that x0/R = 0.22 and
+# R/h = 25.6 are those of the scene; the end time times s^3 (the time scale
+# R^3 / (C_v gamma)): t* = C_v gamma t / R^3 = 0.439 for all. Spec:
+# R:box:x1:centre y:x2:filter thickness:band width:end time.
+set(VD_STUDIES)
+foreach(spec "0.1:0.5:0.1525:0.25:0.3475:0.06:0.059:0.0375"
+             "0.2:1:0.305:0.5:0.695:0.12:0.118:0.3"
+             "0.3:1.5:0.4575:0.75:1.0425:0.18:0.177:1.0125"
+             "0.4:2:0.61:1:1.39:0.24:0.236:2.4")
+  string(REPLACE ":" ";" spec "${spec}")
+  list(GET spec 0 R)
+  list(GET spec 1 BOX)
+  list(GET spec 2 X1)
+  list(GET spec 3 Y)
+  list(GET spec 4 X2)
+  list(GET spec 5 E)
+  list(GET spec 6 W)
+  list(GET spec 7 END)
+  add_test(NAME study_vd_neck_R${R}_2d COMMAND ${SD_VALIDATE} neck
+    ${VD_GRAINS} 1000 --sample-interval 1
+    --set "Domain/Upper corner=${BOX}, ${BOX}"
+    --set "Geometry/Particles=${X1}, ${Y}, ${R}; ${X2}, ${Y}, ${R}"
+    --set "Level set/Filter thickness=${E}"
+    --set "Mesh refinement/Band width=${W}" --set "Time/End time=${END}"
+    --csv vd_neck_R${R}_2d.csv)
+  list(APPEND VD_STUDIES study_vd_neck_R${R}_2d)
+endforeach()
+
+# Resolution: R = 0.2 at R/h = 12.8 and 51.2 (h = 1/64, 1/256; 25.6 is
+# study_vd_neck_R0.2_2d), filter thickness and band times h / (1/128), so
+# that lambda = 6 cells keeps its place in the ramp. h = 1/256 only to
+# t = 0.1 s (t* = 0.146; its cost). Spec: level:filter:band:end time.
+foreach(spec "4:0.24:0.236:0.3" "6:0.06:0.059:0.1")
+  string(REPLACE ":" ";" spec "${spec}")
+  list(GET spec 0 LEVEL)
+  list(GET spec 1 E)
+  list(GET spec 2 W)
+  list(GET spec 3 END)
+  add_test(NAME study_vd_neck_R0.2_level${LEVEL}_2d COMMAND ${SD_VALIDATE}
+    neck ${VD_GRAINS} 2000 --sample-interval 1
+    --set "Mesh refinement/Maximum level=${LEVEL}"
+    --set "Level set/Filter thickness=${E}"
+    --set "Mesh refinement/Band width=${W}" --set "Time/End time=${END}"
+    --csv vd_neck_R0.2_level${LEVEL}_2d.csv)
+  list(APPEND VD_STUDIES study_vd_neck_R0.2_level${LEVEL}_2d)
+endforeach()
+
+# --- Unequal grains R1 = 0.25, R2 = 0.1 (Fig. 45) ----------------------------
+set(VD_UNEQUAL
+  ${CMAKE_SOURCE_DIR}/parameter_files/two_unequal_grains_volume_diffusion_2d.prm)
+add_test(NAME study_vd_unequal_grains_2d COMMAND ${SD_VALIDATE} neck
+  ${VD_UNEQUAL} 1000 --sample-interval 1 --csv vd_unequal_grains_2d.csv)
+# The same run with field output every 10 steps, for the shapes.
+add_test(NAME study_vd_unequal_grains_fields_2d COMMAND $<TARGET_FILE:levelsinter>
+  --overwrite --set "Output/Directory=vd_unequal_fields"
+  --set "Output/Field formats=xdmf" --set "Output/Field interval=10"
+  ${VD_UNEQUAL})
+list(APPEND VD_STUDIES study_vd_unequal_grains_2d
+  study_vd_unequal_grains_fields_2d)
+set_tests_properties(${VD_STUDIES} PROPERTIES LABELS validation-long)
+
+# --- Plots (written into the build's tests/ folder, copied to
+# doc/validation_data with the CSVs) ------------------------------------------
+set(VD_T_STAR "t* = C_v gamma t / R^3")
+add_test(NAME plot_vd_neck_radii_2d COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_neck_growth.py
+  vd_neck_radii_2d.png --law 0.36,5.6 --xlabel ${VD_T_STAR}
+  "R = 0.1=vd_neck_R0.1_2d.csv" "R = 0.2=vd_neck_R0.2_2d.csv"
+  "R = 0.3=vd_neck_R0.3_2d.csv" "R = 0.4=vd_neck_R0.4_2d.csv")
+add_test(NAME plot_vd_neck_resolution_2d COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_neck_growth.py
+  vd_neck_resolution_2d.png --xlabel ${VD_T_STAR}
+  "R/h = 12.8=vd_neck_R0.2_level4_2d.csv" "R/h = 25.6=vd_neck_R0.2_2d.csv"
+  "R/h = 51.2=vd_neck_R0.2_level6_2d.csv")
+# Shapes at t = 0, 0.016, 0.05 and 0.1 s (steps 0, 10, 20, 37) over the
+# pressure at t = 0.1 s.
+add_test(NAME plot_vd_unequal_grains_2d COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_field.py
+  vd_unequal_fields/fields_00004.h5 vd_unequal_grains_2d.png 0.1 0.9 0.25 0.75
+  --field volume_diffusion_pressure --label "t = 0.1 s"
+  --contours "t = 0=vd_unequal_fields/fields_00000.h5,t = 0.016 s=vd_unequal_fields/fields_00001.h5,t = 0.05 s=vd_unequal_fields/fields_00002.h5")
+set_tests_properties(study_vd_neck_R0.1_2d study_vd_neck_R0.2_2d
+  study_vd_neck_R0.3_2d study_vd_neck_R0.4_2d PROPERTIES
+  FIXTURES_SETUP vd_radii)
+set_tests_properties(study_vd_neck_R0.2_level4_2d study_vd_neck_R0.2_level6_2d
+  PROPERTIES FIXTURES_SETUP vd_resolution)
+set_tests_properties(study_vd_unequal_grains_fields_2d PROPERTIES
+  FIXTURES_SETUP vd_unequal_fields)
+set_tests_properties(plot_vd_neck_radii_2d PROPERTIES LABELS validation-long
+  FIXTURES_REQUIRED vd_radii)
+set_tests_properties(plot_vd_neck_resolution_2d PROPERTIES
+  LABELS validation-long FIXTURES_REQUIRED "vd_radii;vd_resolution")
+set_tests_properties(plot_vd_unequal_grains_2d PROPERTIES
+  LABELS validation-long FIXTURES_REQUIRED vd_unequal_fields)
