@@ -53,8 +53,14 @@ add_test(NAME study_vd_unequal_grains_fields_2d COMMAND $<TARGET_FILE:levelsinte
   --overwrite --set "Output/Directory=vd_unequal_fields"
   --set "Output/Field formats=xdmf" --set "Output/Field interval=10"
   ${VD_UNEQUAL})
+# And with half the CFL number (is the wiggle at the old neck the step's?).
+add_test(NAME study_vd_unequal_grains_cfl0.25_fields_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+  --set "Output/Directory=vd_unequal_fields_cfl0.25"
+  --set "Output/Field formats=xdmf" --set "Output/Field interval=10"
+  --set "Time/CFL number=0.25" ${VD_UNEQUAL})
 list(APPEND VD_STUDIES study_vd_unequal_grains_2d
-  study_vd_unequal_grains_fields_2d)
+  study_vd_unequal_grains_fields_2d study_vd_unequal_grains_cfl0.25_fields_2d)
 set_tests_properties(${VD_STUDIES} PROPERTIES LABELS validation-long)
 
 # --- Plots (written into the build's tests/ folder, copied to
