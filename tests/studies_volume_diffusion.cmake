@@ -39,6 +39,14 @@ add_vd_neck_study(vd_neck_R0.2_level4_2d
 add_vd_neck_study(vd_neck_R0.2_level6_2d
   --set "Mesh refinement/Maximum level=6" --set "Level set/Filter thickness=0.06"
   --set "Mesh refinement/Band width=0.059" --set "Time/End time=0.1")
+# h = 1/256 with xi read 12 cells deep (lambda h = 0.047, that of h = 1/128)
+# to t = 0.01 s (t* = 0.0146): does the read depth set the neck? The
+# filter and band of the scene (E = 0.06 must hold 12 cells: the xi GMRES
+# stalled at residual 3.4 with band 0.059, measured).
+add_vd_neck_study(vd_neck_R0.2_level6_lambda12_2d
+  --set "Mesh refinement/Maximum level=6"
+  --set "Volume diffusion/Interior offset=12" --set "Time/End time=0.01")
+list(APPEND VD_STUDIES study_vd_neck_R0.2_level6_lambda12_2d)
 list(APPEND VD_STUDIES study_vd_neck_R0.1_2d study_vd_neck_R0.2_2d
   study_vd_neck_R0.3_2d study_vd_neck_R0.4_2d study_vd_neck_R0.2_level4_2d
   study_vd_neck_R0.2_level6_2d)
