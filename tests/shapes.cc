@@ -132,7 +132,16 @@ namespace
     // Semi-axes of the ellipses and superellipses, turned by 30 degrees
     // (any orientation).
     const double a = 0.3, b = 0.15, angle = 30;
-    if (name == "annulus" && dim == 2)
+    if constexpr (dim == 3)
+      {
+        if (name != "ellipsoid")
+          throw std::runtime_error("unknown case '" + name + "' in 3D");
+        const double c3 = 0.2;
+        g.superellipses = {{0.5, 0.5, 0.5, a, b, c3, 2, angle, angle, 0}};
+        c.measure       = 4 * M_PI * a * b * c3 / 3;
+        c.boundary      = std::numeric_limits<double>::quiet_NaN();
+      }
+    else if (name == "annulus")
       {
         const double R = 0.3, r = 0.12;
         g.particles = {{0.5, 0.5, R}};
@@ -140,7 +149,7 @@ namespace
         c.measure   = M_PI * (R * R - r * r);
         c.boundary  = 2 * M_PI * (R + r);
       }
-    else if ((name == "ellipse" || name == "superellipse") && dim == 2)
+    else if (name == "ellipse" || name == "superellipse")
       {
         const double p  = name == "ellipse" ? 2 : 4;
         g.superellipses = {{0.5, 0.5, a, b, p, angle}};
@@ -169,7 +178,7 @@ namespace
                                      std::to_string(ramanujan));
           }
       }
-    else if (name == "implicit" && dim == 2)
+    else if (name == "implicit")
       {
         g.implicit_function  = "((x-0.5)/a)^2 + ((y-0.5)/b)^2 - 1";
         g.implicit_constants = {{"a", a}, {"b", b}};
@@ -177,16 +186,8 @@ namespace
         c.boundary           = superellipse_perimeter(a, b, 2);
         c.brute_force_distance = brute_force_superellipse(a, b, 2);
       }
-    else if (name == "ellipsoid" && dim == 3)
-      {
-        const double c3  = 0.2;
-        g.superellipses  = {{0.5, 0.5, 0.5, a, b, c3, 2, angle, angle, 0}};
-        c.measure        = 4 * M_PI * a * b * c3 / 3;
-        c.boundary       = std::numeric_limits<double>::quiet_NaN();
-      }
     else
-      throw std::runtime_error("unknown case '" + name + "' in " +
-                               std::to_string(dim) + "D");
+      throw std::runtime_error("unknown case '" + name + "' in 2D");
     return c;
   }
 

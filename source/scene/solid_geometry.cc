@@ -182,7 +182,8 @@ namespace levelsinter
     const double tolerance = 1e-12 * length_scale;
     for (unsigned int iteration = 0; iteration < 200; ++iteration)
       {
-        const Tensor<1, dim> n = gradient_of_phi(x) / gradient_of_phi(x).norm();
+        const Tensor<1, dim> g = gradient_of_phi(x);
+        const Tensor<1, dim> n = g / g.norm();
         const Tensor<1, dim> r = q - x;
         const Tensor<1, dim> t = r - (r * n) * n;
         if (t.norm() <= tolerance)
@@ -239,15 +240,6 @@ namespace levelsinter
       return v;
     }
 
-    template <int dim>
-    Tensor<1, dim>
-    body_frame(const std::vector<double> &row, const Point<dim> &q)
-    {
-      Tensor<1, dim> y;
-      for (unsigned int d = 0; d < dim; ++d)
-        y[d] = q[d] - row[d];
-      return rotate<dim>(row, y, true);
-    }
 
     // Points of a superellipse row's surface in the world frame: the
     // parametrisation y_d = a_d sgn(w_d) |w_d|^(2/p), w on the unit circle
@@ -411,8 +403,20 @@ namespace levelsinter
         a_min = std::min(a_min, row[dim + d]);
         a_max = std::max(a_max, row[dim + d]);
       }
-    const auto phi = [row, p, a_min](const Point<dim> &q) {
-      const Tensor<1, dim> y = body_frame(row, q);
+    // The body frame: y = B (q - centre), B the rotation undone.
+    Point<dim>     centre;
+    Tensor<2, dim> B;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        centre[d] = row[d];
+        Tensor<1, dim> e;
+        e[d]                 = 1;
+        const auto column    = rotate<dim>(row, e, true);
+        for (unsigned int k = 0; k < dim; ++k)
+          B[k][d] = column[k];
+      }
+    const auto phi = [row, p, a_min, centre, B](const Point<dim> &q) {
+      const Tensor<1, dim> y = B * (q - centre);
       // N = (sum |y_d / a_d|^p)^(1/p), scaled by its largest term so that
       // large p does not overflow.
       double m = 0;
