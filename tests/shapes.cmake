@@ -96,3 +96,9 @@ bad_input_test(implicit_constants "entry 'Geometry/Implicit function constants':
 bad_input_test(shapes_with_slotted_disk "describe the solid of Shape = particles only"
   ${SHAPES_OUT} --set "Geometry/Shape=slotted disk" --set "Geometry/Pores=0.5, 0.75, 0.05"
   ${SCENE})
+# The same with the volume correction.
+add_test(NAME study_shapes_hollow_cylinder_vc_2d COMMAND ${SHAPES} hollow
+  ${HOLLOW} 5,6,7 --set "Time/End time=0.15"
+  --set "Volume correction/Enabled=true" --csv study_hollow_cylinder_vc.csv)
+set_tests_properties(study_shapes_hollow_cylinder_vc_2d PROPERTIES
+  LABELS validation-long)
