@@ -74,34 +74,46 @@ add_test(NAME shapes_squarish_particle_2d COMMAND ${VISCOUS} coalescence
 
 # Bad geometry entries: the message names the entry, the item and what is
 # allowed.
-set(SHAPES_OUT --set "Output/Directory=out")
-bad_input_test(superellipse_exponent "entry 'Geometry/Superellipses', item 1: the exponent p must be at least 2"
-  ${SHAPES_OUT} --set "Geometry/Superellipses=0, 0, 0.25, 0.25, 1.5, 0" ${SQUARISH})
-bad_input_test(ellipse_values "entry 'Geometry/Ellipses', item 1: expected 5 values (x, y, a, b, angle)"
-  ${SHAPES_OUT} --set "Geometry/Ellipses=0.1, 0.1, 0.1" ${SQUARISH})
-bad_input_test(ellipse_axis "entry 'Geometry/Elliptic pores', item 1: the semi-axes must be positive"
-  ${SHAPES_OUT} --set "Geometry/Elliptic pores=0, 0, 0.1, -0.05, 0" ${SQUARISH})
-bad_input_test(ellipse_outside "entry 'Geometry/Ellipses', item 1: the shape spans"
-  ${SHAPES_OUT} --set "Geometry/Ellipses=0.45, 0.2, 0.2, 0.1, 0" ${SQUARISH})
-bad_input_test(pore_radius "entry 'Geometry/Pores', pore 1: the radius must be positive"
-  ${SHAPES_OUT} --set "Geometry/Pores=0, 0, -0.1" ${HOLLOW})
-bad_input_test(pore_file_header "pore file"
-  ${SHAPES_OUT} --set "Geometry/Pore file=${BAD}/bad_pores.csv" ${HOLLOW})
-bad_input_test(implicit_syntax "entry 'Geometry/Implicit function': the expression 'x^2 +' (of x,y and the constants) cannot be evaluated"
-  ${SHAPES_OUT} --set "Geometry/Implicit function=x^2 +" ${SQUARISH})
-bad_input_test(implicit_no_solid "is nowhere negative"
-  ${SHAPES_OUT} --set "Geometry/Implicit function=x^2 + y^2 + 1" ${SQUARISH})
-bad_input_test(implicit_constants "entry 'Geometry/Implicit function constants': 'a' is not of the form name = number"
-  ${SHAPES_OUT} --set "Geometry/Implicit function constants=a" ${SQUARISH})
-bad_input_test(shapes_with_slotted_disk "describe the solid of Shape = particles only"
-  ${SHAPES_OUT} --set "Geometry/Shape=slotted disk" --set "Geometry/Pores=0.5, 0.75, 0.05"
-  ${SCENE})
-# The same with the volume correction.
-add_test(NAME study_shapes_hollow_cylinder_vc_2d COMMAND ${SHAPES} hollow
-  ${HOLLOW} 5,6,7 --set "Time/End time=0.15"
-  --set "Volume correction/Enabled=true" --csv study_hollow_cylinder_vc.csv)
-set_tests_properties(study_shapes_hollow_cylinder_vc_2d PROPERTIES
-  LABELS validation-long)
+# shapes_bad_input(NAME EXPECT SCENE ENTRY=VALUE...): the scene with the
+# Geometry entries set must fail with EXPECT.
+function(shapes_bad_input name expect scene)
+  set(sets)
+  foreach(entry ${ARGN})
+    list(APPEND sets --set "Geometry/${entry}")
+  endforeach()
+  bad_input_test(${name} "${expect}" --set "Output/Directory=out" ${sets}
+    ${scene})
+endfunction()
+shapes_bad_input(superellipse_exponent
+  "entry 'Geometry/Superellipses', item 1: the exponent p must be at least 2"
+  ${SQUARISH} "Superellipses=0, 0, 0.25, 0.25, 1.5, 0")
+shapes_bad_input(ellipse_values
+  "entry 'Geometry/Ellipses', item 1: expected 5 values (x, y, a, b, angle)"
+  ${SQUARISH} "Ellipses=0.1, 0.1, 0.1")
+shapes_bad_input(ellipse_axis
+  "entry 'Geometry/Elliptic pores', item 1: the semi-axes must be positive"
+  ${SQUARISH} "Elliptic pores=0, 0, 0.1, -0.05, 0")
+shapes_bad_input(ellipse_outside
+  "entry 'Geometry/Ellipses', item 1: the shape spans"
+  ${SQUARISH} "Ellipses=0.45, 0.2, 0.2, 0.1, 0")
+shapes_bad_input(pore_radius
+  "entry 'Geometry/Pores', pore 1: the radius must be positive"
+  ${HOLLOW} "Pores=0, 0, -0.1")
+shapes_bad_input(pore_file_header
+  "pore file"
+  ${HOLLOW} "Pore file=${BAD}/bad_pores.csv")
+shapes_bad_input(implicit_syntax
+  "entry 'Geometry/Implicit function': the expression 'x^2 +' (of x,y and the constants) cannot be evaluated"
+  ${SQUARISH} "Implicit function=x^2 +")
+shapes_bad_input(implicit_no_solid
+  "is nowhere negative"
+  ${SQUARISH} "Implicit function=x^2 + y^2 + 1")
+shapes_bad_input(implicit_constants
+  "entry 'Geometry/Implicit function constants': 'a' is not of the form name = number"
+  ${SQUARISH} "Implicit function constants=a")
+shapes_bad_input(shapes_with_slotted_disk
+  "describe the solid of Shape = particles only"
+  ${SCENE} "Shape=slotted disk" "Pores=0.5, 0.75, 0.05")
 
 # 1 and 2 ranks: the distance is evaluated point by point, the measures
 # are sums over cells (in another order with 2 ranks). Measured: equal in
