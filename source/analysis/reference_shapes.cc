@@ -1,4 +1,5 @@
 #include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/scene/solid_geometry.h>
 
 #include <algorithm>
 #include <cmath>
@@ -246,8 +247,30 @@ namespace levelsinter
   std::unique_ptr<Function<dim>>
   make_initial_signed_distance(const SceneParameters &scene)
   {
-    if (scene.geometry.shape == GeometryParameters::Shape::particles)
-      return std::make_unique<UnionOfBalls<dim>>(scene.geometry.particles);
+    const auto &g = scene.geometry;
+    if (g.shape == GeometryParameters::Shape::particles)
+      {
+        if (g.pores.empty() && g.superellipses.empty() &&
+            g.elliptic_pores.empty() && g.implicit_function.empty())
+          return std::make_unique<UnionOfBalls<dim>>(g.particles);
+        std::vector<std::unique_ptr<Function<dim>>> parts, holes;
+        if (!g.particles.empty())
+          parts.push_back(std::make_unique<UnionOfBalls<dim>>(g.particles));
+        for (const auto &row : g.superellipses)
+          parts.push_back(make_superellipse_distance<dim>(row));
+        if (!g.implicit_function.empty())
+          parts.push_back(make_implicit_distance<dim>(
+            g.implicit_function,
+            g.implicit_constants,
+            scene.domain.coarse_cell_size(),
+            "Geometry/Implicit function"));
+        if (!g.pores.empty())
+          holes.push_back(std::make_unique<UnionOfBalls<dim>>(g.pores));
+        for (const auto &row : g.elliptic_pores)
+          holes.push_back(make_superellipse_distance<dim>(row));
+        return std::make_unique<SolidMinusHoles<dim>>(std::move(parts),
+                                                      std::move(holes));
+      }
     if (scene.geometry.shape ==
         GeometryParameters::Shape::perturbed_particle)
       {
@@ -263,7 +286,6 @@ namespace levelsinter
       }
     if constexpr (dim == 2)
       {
-        const auto &g = scene.geometry;
         return std::make_unique<SlottedDisk>(
           Point<2>(g.slotted_disk_centre[0], g.slotted_disk_centre[1]),
           g.slotted_disk_radius,

@@ -1,6 +1,7 @@
 #include <levelsinter/scene/geometry_parameters.h>
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/particles.h>
+#include <levelsinter/scene/solid_geometry.h>
 
 namespace levelsinter
 {
@@ -45,6 +46,54 @@ namespace levelsinter
         "order (case and spaces ignored), then one particle per line. "
         "Relative paths are relative to the scene file. Blank lines and "
         "lines starting with '#' are ignored.");
+      prm.declare_entry(
+        "Pores",
+        "",
+        Patterns::Anything(),
+        "Balls cut out of the solid (holes inside or between particles), "
+        "'x, y[, z], r' separated by ';' as for 'Particles'. May be combined "
+        "with a pore file.");
+      prm.declare_entry("Pore file",
+                        "",
+                        Patterns::Anything(),
+                        "CSV file of pores, in the form of the particle "
+                        "file.");
+      prm.declare_entry(
+        "Ellipses",
+        "",
+        Patterns::Anything(),
+        "Ellipses (ellipsoids in 3D) added to the solid, separated by ';': "
+        "'x, y, a, b, angle' in 2D (centre, semi-axes along the body's x "
+        "and y, and the angle in degrees from the x axis to the body's x "
+        "axis, counterclockwise); 'x, y, z, a, b, c, angle_x, angle_y, "
+        "angle_z' in 3D (the body turned about x, then y, then z, in "
+        "degrees).");
+      prm.declare_entry(
+        "Superellipses",
+        "",
+        Patterns::Anything(),
+        "Superellipses |x'/a|^p + |y'/b|^p = 1 (superellipsoids in 3D, "
+        "+ |z'/c|^p) added to the solid, as 'Ellipses' with the exponent p "
+        "(at least 2) after the semi-axes: 'x, y, a, b, p, angle' in 2D, "
+        "'x, y, z, a, b, c, p, angle_x, angle_y, angle_z' in 3D.");
+      prm.declare_entry("Elliptic pores",
+                        "",
+                        Patterns::Anything(),
+                        "Ellipses (ellipsoids) cut out of the solid, in the "
+                        "form of 'Ellipses'.");
+      prm.declare_entry(
+        "Implicit function",
+        "",
+        Patterns::Anything(),
+        "A solid added to the others: the region where this function of "
+        "x, y[, z] is negative (muparser syntax, e.g. "
+        "'x^4 + y^4 - 0.2^4'). Its zero set is the surface; the level set "
+        "is built from the distance to it.");
+      prm.declare_entry("Implicit function constants",
+                        "",
+                        Patterns::Anything(),
+                        "Constants of the implicit function, 'name = value' "
+                        "separated by ','; pi is defined.");
       prm.declare_entry("Slotted disk centre",
                         "0.5, 0.75",
                         Patterns::Anything(),
@@ -93,6 +142,41 @@ namespace levelsinter
         const auto from_file = read_particle_file(particle_file, d);
         particles.insert(particles.end(), from_file.begin(), from_file.end());
       }
+    pores = parse_inline_particles(prm.get("Pores"),
+                                   d,
+                                   "Geometry/Pores",
+                                   "pore");
+    pore_file = prm.get("Pore file");
+    if (!pore_file.empty())
+      {
+        if (pore_file.front() != '/' && !scene_directory.empty())
+          pore_file = scene_directory + "/" + pore_file;
+        const auto from_file = read_particle_file(pore_file, d, "pore");
+        pores.insert(pores.end(), from_file.begin(), from_file.end());
+      }
+    // Each list is checked against the domain as read, so that an error
+    // names the entry and the item.
+    const auto read_shapes = [&](const std::string &entry,
+                                 const bool         with_exponent) {
+      const auto rows = parse_superellipses(prm.get(entry),
+                                            d,
+                                            with_exponent,
+                                            "Geometry/" + entry);
+      (d == 2 ? check_superellipses_in_domain<2> :
+                check_superellipses_in_domain<3>)(rows,
+                                                  domain.lower_corner,
+                                                  domain.upper_corner,
+                                                  "Geometry/" + entry);
+      return rows;
+    };
+    superellipses      = read_shapes("Ellipses", false);
+    const auto super   = read_shapes("Superellipses", true);
+    superellipses.insert(superellipses.end(), super.begin(), super.end());
+    elliptic_pores     = read_shapes("Elliptic pores", false);
+    implicit_function  = prm.get("Implicit function");
+    implicit_constants = parse_constants(
+      prm.get("Implicit function constants"),
+      "Geometry/Implicit function constants");
     if (shape == Shape::slotted_disk)
       slotted_disk_centre =
         read_coordinates(prm, "Geometry", "Slotted disk centre", 2);
@@ -103,6 +187,13 @@ namespace levelsinter
     perturbation_mode      = prm.get_integer("Perturbation mode");
     prm.leave_subsection();
 
+    const bool general_solid = !pores.empty() || !superellipses.empty() ||
+                               !elliptic_pores.empty() ||
+                               !implicit_function.empty();
+    if (shape != Shape::particles && general_solid)
+      fail_entry("Geometry/Shape",
+                 "pores, ellipses, superellipses and implicit functions "
+                 "describe the solid of Shape = particles only");
     if (shape == Shape::perturbed_particle && particles.size() != 1)
       fail_entry("Geometry/Particles",
                  "Shape = perturbed particle needs exactly one particle");
@@ -122,13 +213,21 @@ namespace levelsinter
                                   domain.upper_corner);
         return;
       }
-    if (particles.empty())
+    if (particles.empty() && superellipses.empty() &&
+        implicit_function.empty())
       fail_entry("Geometry/Particles",
-                 "the scene has no particle: give 'Particles' or 'Particle "
-                 "file'");
+                 "the scene has no solid: give 'Particles', 'Particle file', "
+                 "'Ellipses', 'Superellipses' or 'Implicit function'");
     check_distinct_centres(particles);
-    check_particles_in_domain(particles,
-                              domain.lower_corner,
-                              domain.upper_corner);
+    const auto &lo = domain.lower_corner, &hi = domain.upper_corner;
+    check_particles_in_domain(particles, lo, hi);
+    check_particles_in_domain(pores, lo, hi, "pore");
+    if (!implicit_function.empty())
+      (d == 2 ? check_implicit_function<2> : check_implicit_function<3>)(
+        implicit_function,
+        implicit_constants,
+        lo,
+        hi,
+        "Geometry/Implicit function");
   }
 } // namespace levelsinter

@@ -57,7 +57,8 @@ namespace levelsinter
   std::vector<std::vector<double>>
   parse_inline_particles(const std::string &text,
                          const unsigned int dim,
-                         const std::string &entry_name)
+                         const std::string &entry_name,
+                         const std::string &item_name)
   {
     std::vector<std::vector<double>> particles;
     unsigned int                     index = 0;
@@ -69,7 +70,8 @@ namespace levelsinter
         std::vector<double> p;
         const std::string   error = parse_particle(item, in_order(dim), p);
         if (!error.empty())
-          throw std::runtime_error("entry '" + entry_name + "', particle " +
+          throw std::runtime_error("entry '" + entry_name + "', " +
+                                   item_name + " " +
                                    std::to_string(index) + ": " + error);
         particles.push_back(p);
       }
@@ -77,11 +79,13 @@ namespace levelsinter
   }
 
   std::vector<std::vector<double>>
-  read_particle_file(const std::string &file_name, const unsigned int dim)
+  read_particle_file(const std::string &file_name,
+                     const unsigned int dim,
+                     const std::string &item_name)
   {
     std::ifstream in(file_name);
     if (!in)
-      throw std::runtime_error("particle file '" + file_name +
+      throw std::runtime_error(item_name + " file '" + file_name +
                                "' cannot be opened for reading");
     const std::vector<std::string> names =
       dim == 2 ? std::vector<std::string>{"x", "y", "r"} :
@@ -99,7 +103,7 @@ namespace levelsinter
         if (trimmed.empty() || trimmed[0] == '#')
           continue;
         const auto where = [&]() {
-          return "particle file '" + file_name + "', line " +
+          return item_name + " file '" + file_name + "', line " +
                  std::to_string(line_number) + ": ";
         };
         if (column.empty())
@@ -134,8 +138,8 @@ namespace levelsinter
         particles.push_back(p);
       }
     if (particles.empty())
-      throw std::runtime_error("particle file '" + file_name +
-                               "' holds no particle");
+      throw std::runtime_error(item_name + " file '" + file_name +
+                               "' holds no " + item_name);
     return particles;
   }
 
@@ -168,7 +172,8 @@ namespace levelsinter
   void
   check_particles_in_domain(const std::vector<std::vector<double>> &particles,
                             const std::vector<double> &lower_corner,
-                            const std::vector<double> &upper_corner)
+                            const std::vector<double> &upper_corner,
+                            const std::string         &item_name)
   {
     const unsigned int dim = lower_corner.size();
     // A particle that crosses a face is its own mirror image there if its
@@ -205,13 +210,14 @@ namespace levelsinter
                 (crosses_upper && !mirrored(p, d, hi, tol)))
               {
                 std::ostringstream msg;
-                msg << "particle " << i + 1 << " (centre";
+                msg << item_name << " " << i + 1 << " (centre";
                 for (unsigned int k = 0; k < dim; ++k)
                   msg << (k ? ", " : " ") << p[k];
                 msg << ", radius " << r
                     << ") is not inside the domain along axis " << d
                     << " [" << lower_corner[d] << ", " << upper_corner[d]
-                    << "]; a particle may only be cut by a face its centre "
+                    << "]; a " << item_name
+                    << " may only be cut by a face its centre "
                        "lies on or across which the list holds its mirror "
                        "image (symmetry plane)";
                 throw std::runtime_error(msg.str());

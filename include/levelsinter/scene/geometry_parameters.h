@@ -4,6 +4,7 @@
 
 #include <levelsinter/scene/domain_parameters.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,18 @@ namespace levelsinter
     // Inline particles and the particle file are merged: x, y[, z], r.
     std::vector<std::vector<double>> particles;
     std::string                      particle_file;
+    // The solid of Shape = particles is the union of the particles, the
+    // superellipses and the implicit function's solid, minus the pores and
+    // elliptic pores.
+    // Inline pores and the pore file, merged: x, y[, z], r.
+    std::vector<std::vector<double>> pores;
+    std::string                      pore_file;
+    // Ellipses (p = 2) and superellipses: rows of parse_superellipses().
+    std::vector<std::vector<double>> superellipses;
+    std::vector<std::vector<double>> elliptic_pores;
+    // f(x, y[, z]) < 0 inside; empty: none.
+    std::string                      implicit_function;
+    std::map<std::string, double>    implicit_constants;
     std::vector<double>              slotted_disk_centre;
     double                           slotted_disk_radius    = 0;
     double                           slot_width             = 0;

@@ -6,14 +6,16 @@
 namespace levelsinter
 {
   /**
-   * Particles are rows (x, y[, z], r) until the dimension is known; these
-   * functions read and check them and report errors with the place they
-   * come from (entry name, or file and line).
+   * Particles (and pores, the balls cut out of the solid) are rows
+   * (x, y[, z], r) until the dimension is known; these functions read and
+   * check them and report errors with the place they come from (entry
+   * name, or file and line) and @p item_name ("particle", "pore").
    */
   std::vector<std::vector<double>>
   parse_inline_particles(const std::string &text,
                          const unsigned int dim,
-                         const std::string &entry_name);
+                         const std::string &entry_name,
+                         const std::string &item_name = "particle");
 
   /**
    * Read a CSV file with a header line naming the columns x, y, r (2D) or
@@ -23,7 +25,9 @@ namespace levelsinter
    * naming the file and line.
    */
   std::vector<std::vector<double>>
-  read_particle_file(const std::string &file_name, const unsigned int dim);
+  read_particle_file(const std::string &file_name,
+                     const unsigned int dim,
+                     const std::string &item_name = "particle");
 
   /**
    * Two particles with the same centre (to 1e-12 of the larger radius)
@@ -42,5 +46,6 @@ namespace levelsinter
   void
   check_particles_in_domain(const std::vector<std::vector<double>> &particles,
                             const std::vector<double> &lower_corner,
-                            const std::vector<double> &upper_corner);
+                            const std::vector<double> &upper_corner,
+                            const std::string &item_name = "particle");
 } // namespace levelsinter

@@ -1,0 +1,407 @@
+// Shapes of the Geometry section (issue 17; doc/validation.md, "Shapes:
+// holes, ellipses, superellipses, implicit functions"):
+//
+//   shapes measures CASE LEVELS [options]
+//     the filtered level set of a shape at t = 0 on the unit box, refined
+//     around the interface up to each level of LEVELS, against its exact
+//     area (volume) and perimeter (surface): CASE is annulus (a disc with
+//     a concentric hole), ellipse, superellipse, implicit (the ellipse
+//     given as a parsed function) or ellipsoid (3D). Also the displacement
+//     of the discrete zero level set from the exact curve (largest and
+//     RMS) and, for the shapes whose distance comes from closest-point
+//     projection, the projection against a brute-force distance.
+//   shapes hollow SCENE.prm LEVELS [options]
+//     a viscous hollow cylinder (one particle minus a concentric pore)
+//     closing under surface tension, against the exact Stokes solution
+//     (doc/numerics.md): the wall thickness b - a grows at gamma /
+//     (2 eta_s) while the area stays.
+//
+// Options: --csv FILE, --set ENTRY=VALUE (hollow), limits
+// --max-area-error, --max-perimeter-error (relative, finest level),
+// --min-area-order, --max-displacement (finest level, / h),
+// --max-projection-error (/ h); hollow: --max-rate-error,
+// --max-radius-error, --max-area-drift. Exit code 0 only if every check
+// passes.
+
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/distributed/tria.h>
+
+#include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/grid/box_mesh.h>
+#include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/scene/command_line.h>
+#include <levelsinter/scene/solid_geometry.h>
+#include <levelsinter/time/simulation.h>
+
+#include "study_support.h"
+#include "study_table.h"
+
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+using namespace levelsinter;
+
+namespace
+{
+  using study::check;
+  using study::Options;
+  using study::Table;
+
+  // The exact measures of a shape: area (volume) and perimeter (surface;
+  // NaN where not known), and for shapes drawn by closest-point
+  // projection a brute-force signed distance to compare it with.
+  template <int dim>
+  struct ShapeCase
+  {
+    SceneParameters                             scene;
+    double                                      measure = 0;
+    double                                      boundary = 0;
+    std::function<double(const Point<dim> &)>   brute_force_distance;
+  };
+
+  // Points of the superellipse x = a sgn(c)|c|^(2/p), y = b sgn(s)|s|^(2/p)
+  // centred at (0.5, 0.5), at n parameter values.
+  std::vector<Point<2>>
+  superellipse_points(const double a, const double b, const double p,
+                      const unsigned int n)
+  {
+    std::vector<Point<2>> points;
+    const auto power = [p](const double w) {
+      return (w < 0 ? -1 : 1) * std::pow(std::abs(w), 2 / p);
+    };
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double t = 2 * M_PI * i / n;
+        points.emplace_back(0.5 + a * power(std::cos(t)),
+                            0.5 + b * power(std::sin(t)));
+      }
+    return points;
+  }
+
+  // Brute force: the distance to a polyline of 2^16 points of the curve
+  // (its chords lie within (pi a / 2^16)^2 / R of the curve), signed by
+  // |x/a|^p + |y/b|^p - 1.
+  std::function<double(const Point<2> &)>
+  brute_force_superellipse(const double a, const double b, const double p)
+  {
+    const auto points = std::make_shared<std::vector<Point<2>>>(
+      superellipse_points(a, b, p, 1u << 16));
+    return [points, a, b, p](const Point<2> &x) {
+      double d = std::numeric_limits<double>::max();
+      for (unsigned int i = 0; i < points->size(); ++i)
+        {
+          const Point<2>    &u = (*points)[i];
+          const Point<2>    &v = (*points)[(i + 1) % points->size()];
+          const Tensor<1, 2> e = v - u;
+          const double t = std::clamp((x - u) * e / e.norm_square(), 0., 1.);
+          d = std::min(d, x.distance(u + t * e));
+        }
+      const double f = std::pow(std::abs(x[0] - 0.5) / a, p) +
+                       std::pow(std::abs(x[1] - 0.5) / b, p) - 1;
+      return f < 0 ? -d : d;
+    };
+  }
+
+  // Perimeter of the same polyline with 2^20 points (second order: its
+  // error is below 1e-10 of the perimeter).
+  double
+  superellipse_perimeter(const double a, const double b, const double p)
+  {
+    const auto points = superellipse_points(a, b, p, 1u << 20);
+    double     length = 0;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      length += points[i].distance(points[(i + 1) % points.size()]);
+    return length;
+  }
+
+  template <int dim>
+  ShapeCase<dim>
+  make_case(const std::string &name)
+  {
+    ShapeCase<dim> c;
+    auto          &s = c.scene;
+    s.dimension      = dim;
+    s.geometry.shape = GeometryParameters::Shape::particles;
+    s.domain.lower_corner = std::vector<double>(dim, 0.);
+    s.domain.upper_corner = std::vector<double>(dim, 1.);
+    s.domain.subdivisions = std::vector<unsigned int>(dim, 1);
+    auto &g = s.geometry;
+    // Semi-axes of the ellipses and superellipses, turned by 30 degrees
+    // (any orientation).
+    const double a = 0.3, b = 0.15, angle = 30;
+    if constexpr (dim == 3)
+      {
+        if (name != "ellipsoid")
+          throw std::runtime_error("unknown case '" + name + "' in 3D");
+        const double c3 = 0.2;
+        g.superellipses = {{0.5, 0.5, 0.5, a, b, c3, 2, angle, angle, 0}};
+        c.measure       = 4 * M_PI * a * b * c3 / 3;
+        c.boundary      = std::numeric_limits<double>::quiet_NaN();
+      }
+    else if (name == "annulus")
+      {
+        const double R = 0.3, r = 0.12;
+        g.particles = {{0.5, 0.5, R}};
+        g.pores     = {{0.5, 0.5, r}};
+        c.measure   = M_PI * (R * R - r * r);
+        c.boundary  = 2 * M_PI * (R + r);
+      }
+    else if (name == "ellipse" || name == "superellipse")
+      {
+        const double p  = name == "ellipse" ? 2 : 4;
+        g.superellipses = {{0.5, 0.5, a, b, p, angle}};
+        c.measure       = 4 * a * b * std::pow(std::tgamma(1 + 1 / p), 2) /
+                    std::tgamma(1 + 2 / p);
+        c.boundary = superellipse_perimeter(a, b, p);
+        // The brute force in the body frame: turn x back by the angle.
+        const auto body = brute_force_superellipse(a, b, p);
+        c.brute_force_distance = [body, angle](const Point<dim> &x) {
+          const double   t = angle * M_PI / 180;
+          const double   u = x[0] - 0.5, v = x[1] - 0.5;
+          const Point<2> y(0.5 + std::cos(t) * u + std::sin(t) * v,
+                           0.5 - std::sin(t) * u + std::cos(t) * v);
+          return body(y);
+        };
+        if (name == "ellipse")
+          {
+            // Ramanujan's second formula, to 1e-9 here: the numerical
+            // perimeter is checked against it.
+            const double h = std::pow((a - b) / (a + b), 2);
+            const double ramanujan =
+              M_PI * (a + b) * (1 + 3 * h / (10 + std::sqrt(4 - 3 * h)));
+            if (std::abs(ramanujan / c.boundary - 1) > 1e-8)
+              throw std::logic_error("ellipse perimeter: " +
+                                     std::to_string(c.boundary) + " against " +
+                                     std::to_string(ramanujan));
+          }
+      }
+    else if (name == "implicit")
+      {
+        g.implicit_function  = "((x-0.5)/a)^2 + ((y-0.5)/b)^2 - 1";
+        g.implicit_constants = {{"a", a}, {"b", b}};
+        c.measure            = M_PI * a * b;
+        c.boundary           = superellipse_perimeter(a, b, 2);
+        c.brute_force_distance = brute_force_superellipse(a, b, 2);
+      }
+    else
+      throw std::runtime_error("unknown case '" + name + "' in 2D");
+    return c;
+  }
+
+  // The unit box refined where |d| < the cell diameter up to @p level;
+  // alpha = filter(d) with the sine filter of thickness 8 h (the scenes'
+  // setting).
+  template <int dim>
+  void
+  build(parallel::distributed::Triangulation<dim> &tria,
+        LevelSetField<dim>                        &level_set,
+        const SceneParameters                     &scene,
+        const Function<dim>                       &distance,
+        const unsigned int                         level)
+  {
+    make_box_mesh(tria, scene.domain);
+    tria.refine_global(2);
+    for (unsigned int l = 2; l < level; ++l)
+      {
+        for (const auto &cell : tria.active_cell_iterators())
+          if (cell->is_locally_owned() &&
+              std::abs(distance.value(cell->center())) < cell->diameter())
+            cell->set_refine_flag();
+        tria.execute_coarsening_and_refinement();
+      }
+    const double         h = 1. / (1u << level);
+    const LevelSetFilter filter(LevelSetFilter::Type::sine, 8 * h);
+    level_set.setup_dofs();
+    level_set.interpolate(ScalarFunctionFromFunctionObject<dim>(
+      [&](const Point<dim> &p) { return filter.filter(distance.value(p)); }));
+  }
+
+  template <int dim>
+  void
+  measures(const std::string &name, const std::vector<std::string> &args)
+  {
+    const Options  options = study::parse_options(args, 3);
+    ShapeCase<dim> c       = make_case<dim>(name);
+    const auto     distance = make_initial_signed_distance<dim>(c.scene);
+    Table          table({"level", "h", "area_error", "perimeter_error",
+                          "max_displacement_over_h", "rms_displacement_over_h",
+                          "projection_error_over_h", "seconds"},
+                options.csv);
+    for (const unsigned int level : study::parse_levels(args.at(2)))
+      {
+        const auto start = std::chrono::steady_clock::now();
+        parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
+        LevelSetField<dim>                        level_set(tria);
+        build(tria, level_set, c.scene, *distance, level);
+        const double h = 1. / (1u << level);
+        const auto   m = interface_measures::volume_and_area(level_set);
+        // The discrete interface's distance from the exact curve, measured
+        // by the same distance function (exact for the annulus; converged
+        // closest-point projection otherwise, checked below).
+        const auto shape = interface_measures::shape_error(level_set, *distance);
+        const double square = interface_measures::interface_integral<dim>(
+          level_set, [&](const Point<dim> &x, const Tensor<1, dim> &) {
+            return std::pow(distance->value(x), 2);
+          });
+        // The projection against the brute force at the vertices of the
+        // cells the interface crosses (rank 0's share).
+        double projection_error = 0;
+        if (c.brute_force_distance)
+          for (const auto &cell : tria.active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                std::abs(distance->value(cell->center())) < cell->diameter())
+              for (const unsigned int v : cell->vertex_indices())
+                projection_error =
+                  std::max(projection_error,
+                           std::abs(distance->value(cell->vertex(v)) -
+                                    c.brute_force_distance(cell->vertex(v))));
+        projection_error =
+          Utilities::MPI::max(projection_error, MPI_COMM_WORLD);
+        const double seconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                        start)
+            .count();
+        table.add({double(level),
+                   h,
+                   std::abs(m.solid_volume / c.measure - 1),
+                   std::abs(m.interface_area / c.boundary - 1),
+                   shape.max_distance / h,
+                   std::sqrt(square / m.interface_area) / h,
+                   c.brute_force_distance ?
+                     projection_error / h :
+                     std::numeric_limits<double>::quiet_NaN(),
+                   seconds});
+      }
+    check("finest relative area (volume) error", table.finest("area_error"),
+          options, "max-area-error");
+    check("area (volume) error order", table.order("area_error"), options,
+          "min-area-order", false);
+    check("finest relative perimeter error", table.finest("perimeter_error"),
+          options, "max-perimeter-error");
+    check("finest largest interface displacement / h",
+          table.finest("max_displacement_over_h"), options,
+          "max-displacement");
+    check("finest projection error / h",
+          table.finest("projection_error_over_h"), options,
+          "max-projection-error");
+  }
+
+  // The hollow cylinder: one particle of radius b minus a concentric pore
+  // of radius a. With area A = pi (b^2 - a^2) and perimeter P = 2 pi (a +
+  // b) (whole cylinder; the symmetry planes' parts scale both), the wall
+  // thickness is w = b - a = 2A/P and a = (P / (2 pi) - w) / 2; exact:
+  // w(t) = w0 + gamma t / (2 eta_s), a(t) = ((b0^2 - a0^2) / w - w) / 2.
+  void
+  hollow(const std::string &scene_file, const std::vector<std::string> &args)
+  {
+    constexpr int dim     = 2;
+    const Options options = study::parse_options(args, 3);
+    Table         table({"level", "h", "steps", "cpu_time", "rate_error",
+                         "max_radius_error", "area_drift", "final_a_over_a0"},
+                options.csv);
+    for (const unsigned int level : study::parse_levels(args.at(2)))
+      {
+        const auto   base = read_scene(scene_file, options.overrides);
+        const double h    = study::cell_size(base, level);
+        const std::string directory =
+          "shapes_output/hollow_level" + std::to_string(level);
+        std::filesystem::create_directories(directory);
+        auto overrides = options.overrides;
+        overrides.insert(
+          overrides.end(),
+          {{"Mesh refinement/Maximum level", std::to_string(level)},
+           {"Mesh refinement/Band width", std::to_string(6 * h)},
+           {"Level set/Filter thickness", std::to_string(8 * h)},
+           {"Output/Directory", directory},
+           {"Output/Metrics interval", "1"},
+           {"Output/Field formats", "none"}});
+        const auto scene = read_scene(scene_file, overrides);
+        const auto &g    = scene.geometry;
+        if (g.particles.size() != 1 || g.pores.size() != 1)
+          throw std::runtime_error("the hollow case needs one particle and "
+                                   "one pore");
+        const double b0 = g.particles[0][dim], a0 = g.pores[0][dim];
+        const double gamma = scene.viscous_flow.surface_tension;
+        const double eta   = scene.viscous_flow.solid_viscosity;
+        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        const auto summary = simulation.run();
+
+        const study::CsvTable metrics(directory + "/metrics.csv");
+        const auto &t = metrics.column("time");
+        const auto &A = metrics.column("solid_volume");
+        const auto &P = metrics.column("interface_area");
+        const double parts = std::pow(2., scene.domain.symmetry_planes.size());
+        const auto   a_of  = [&](const unsigned int i) {
+          const double w = 2 * A[i] / P[i];
+          return (parts * P[i] / (2 * M_PI) - w) / 2;
+        };
+        const auto exact_a = [&](const double time) {
+          const double w = b0 - a0 + gamma * time / (2 * eta);
+          return ((b0 * b0 - a0 * a0) / w - w) / 2;
+        };
+        double max_error = 0;
+        std::ofstream series;
+        if (study::is_root() && !options.csv.empty())
+          {
+            series.open(options.csv + ".level" + std::to_string(level) +
+                        ".csv");
+            series << "time,a,a_exact\n";
+          }
+        for (unsigned int i = 0; i < t.size(); ++i)
+          {
+            max_error =
+              std::max(max_error, std::abs(a_of(i) - exact_a(t[i])) / a0);
+            if (series.is_open())
+              series << t[i] << ',' << a_of(i) << ',' << exact_a(t[i]) << '\n';
+          }
+        const unsigned int last = t.size() - 1;
+        table.add({double(level),
+                   h,
+                   double(summary.steps),
+                   summary.cpu_time,
+                   (a_of(last) - a_of(0)) / (exact_a(t[last]) - a0) - 1,
+                   max_error,
+                   std::abs(metrics.column("volume_change").back()),
+                   a_of(last) / a0});
+      }
+    check("finest |mean inner-radius rate / exact - 1|",
+          std::abs(table.finest("rate_error")), options, "max-rate-error");
+    check("finest largest |a - a_exact| / a0", table.finest("max_radius_error"),
+          options, "max-radius-error");
+    check("finest solid-area drift", table.finest("area_drift"), options,
+          "max-area-drift");
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  try
+    {
+      const std::vector<std::string> args(argv + 1, argv + argc);
+      if (args.size() < 3)
+        throw std::runtime_error("usage: see the head of shapes.cc");
+      if (args[0] == "measures")
+        {
+          if (args[1] == "ellipsoid")
+            measures<3>(args[1], args);
+          else
+            measures<2>(args[1], args);
+        }
+      else if (args[0] == "hollow")
+        hollow(args[1], args);
+      else
+        throw std::runtime_error("unknown mode " + args[0]);
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "error: " << e.what() << std::endl;
+      return 2;
+    }
+  return study::failures() == 0 ? 0 : 1;
+}
