@@ -49,14 +49,14 @@ namespace levelsinter
   template <int dim>
   VolumeDiffusion<dim>::VolumeDiffusion(
     const VolumeDiffusionParameters       &parameters,
+    const double                           seconds_per_time_unit,
     const ViscousFlowParameters           &mechanics,
     const PhaseLawParameters              &law,
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
     const unsigned int                     band_level,
     TimerOutput                           &timer)
-    : coefficient(
-        parameters.coefficient_in_time_unit(mechanics.surface_tension))
+    : coefficient(parameters.mobility() * seconds_per_time_unit)
     , settings(TwoPhaseStokes<dim>::Settings::from(mechanics,
                                                    symmetry_planes,
                                                    band_level))
