@@ -2,8 +2,9 @@
 # One scene, three runs: coupled, surface only, volume only (the other
 # mechanism switched off with --set).
 set(COUPLED ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_coupled_2d.prm)
-set(COUPLED_SURFACE "Volume diffusion/Enabled=false")
-set(COUPLED_VOLUME "Surface diffusion/Enabled=false")
+set(COUPLED_ONLY_surface --set "Volume diffusion/Enabled=false")
+set(COUPLED_ONLY_volume --set "Surface diffusion/Enabled=false")
+set(COUPLED_ONLY_coupled)
 set(COMPARE_NECKS ${CMAKE_SOURCE_DIR}/scripts/compare_neck_curves.py)
 
 # Both sections in reduced time: one scene has one time.
@@ -24,16 +25,10 @@ bad_input_test(coupled_two_reduced_times "Volume diffusion/Time unit"
 # -4.8e-3 at the end: checked at 3e-5.
 set(COUPLED_CI_LIMITS_coupled --min-neck-growth 1.3 --max-volume-change 3e-5)
 foreach(run coupled surface volume)
-  if(run STREQUAL "surface")
-    set(only --set ${COUPLED_SURFACE})
-  elseif(run STREQUAL "volume")
-    set(only --set ${COUPLED_VOLUME})
-  else()
-    set(only)
-  endif()
   add_test(NAME coupled_diffusion_${run}_2d COMMAND ${SD_VALIDATE} neck
-    ${COUPLED} 100 --sample-interval 1 --set "Time/End time=0.003" ${only}
-    --csv coupled_ci_${run}.csv ${COUPLED_CI_LIMITS_${run}})
+    ${COUPLED} 100 --sample-interval 1 --set "Time/End time=0.003"
+    ${COUPLED_ONLY_${run}} --csv coupled_ci_${run}.csv
+    ${COUPLED_CI_LIMITS_${run}})
   set_tests_properties(coupled_diffusion_${run}_2d PROPERTIES
     FIXTURES_SETUP coupled_ci_${run})
 endforeach()
@@ -57,17 +52,10 @@ foreach(cfl 0.5 0.25)
     set(suffix "_cfl${cfl}")
   endif()
   foreach(run coupled surface volume)
-    if(run STREQUAL "surface")
-      set(only --set ${COUPLED_SURFACE})
-    elseif(run STREQUAL "volume")
-      set(only --set ${COUPLED_VOLUME})
-    else()
-      set(only)
-    endif()
     set(name study_coupled_pair_${run}${suffix}_2d)
     add_test(NAME ${name} COMMAND ${SD_VALIDATE} neck ${COUPLED} 3000
-      --sample-interval 1 --set "Time/CFL number=${cfl}" ${only}
-      --csv coupled_pair_${run}${suffix}_2d.csv)
+      --sample-interval 1 --set "Time/CFL number=${cfl}"
+      ${COUPLED_ONLY_${run}} --csv coupled_pair_${run}${suffix}_2d.csv)
     set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name})
     list(APPEND COUPLED_STUDIES ${name})
   endforeach()
