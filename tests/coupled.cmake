@@ -71,3 +71,39 @@ set_tests_properties(study_coupled_pair_plot_2d PROPERTIES FIXTURES_REQUIRED
   "study_coupled_pair_surface_2d;study_coupled_pair_volume_2d;study_coupled_pair_coupled_2d")
 list(APPEND COUPLED_STUDIES study_coupled_pair_plot_2d)
 set_tests_properties(${COUPLED_STUDIES} PROPERTIES LABELS validation-long)
+
+# One scene time: the coupled scene in the volume-diffusion reduced time
+# t* = C_v gamma t / R^3 = 1.4625 t (R = 0.2) must take the same steps as
+# in seconds, both coefficients converted (SceneParameters::
+# seconds_per_time_unit()): 3 fixed steps of 2e-4 s = 2.925e-4 in t*, end
+# time 0.1 s = 0.14625 (the loop spreads the remaining time evenly over
+# the steps). The geometry columns must agree to roundoff (checked at
+# 1e-8); time, dt and the speeds scale with the unit, iterations and
+# timings are not compared.
+foreach(unit seconds reduced)
+  if(unit STREQUAL "seconds")
+    set(step 2e-4)
+    set(end 0.1)
+  else()
+    set(step 2.925e-4)
+    set(end 0.14625)
+  endif()
+  add_test(NAME coupled_time_${unit}
+    COMMAND levelsinter --overwrite --set "Time/Time step=${step}"
+      --set "Time/End time=${end}"
+      --set "Time/CFL number=0" --set "Time/Maximum steps=3"
+      --set "Volume diffusion/Time unit=${unit}"
+      --set "Volume diffusion/Reference radius=0.2"
+      --set "Output/Directory=coupled_time_${unit}"
+      --set "Output/Field formats=none" ${COUPLED})
+  set_tests_properties(coupled_time_${unit} PROPERTIES
+    FIXTURES_SETUP coupled_time_${unit})
+endforeach()
+add_test(NAME coupled_time_reduced_as_seconds
+  COMMAND compare_metrics coupled_time_seconds/metrics.csv
+    coupled_time_reduced/metrics.csv 1e-8 time dt wall_time max_velocity
+    volume_correction_speed transport_iterations surface_diffusion_iterations
+    surface_diffusion_solve_cpu_time volume_diffusion_mechanics_iterations
+    volume_diffusion_xi_iterations)
+set_tests_properties(coupled_time_reduced_as_seconds PROPERTIES
+  FIXTURES_REQUIRED "coupled_time_seconds;coupled_time_reduced")
