@@ -21,9 +21,9 @@ namespace levelsinter
   {
   public:
     SurfaceDiffusion(const SceneParameters::SurfaceDiffusion &parameters,
-                     const double                             seconds_per_time_unit,
-                     const LevelSetFilter                    &filter,
-                     TimerOutput                             &timer);
+                     const double         seconds_per_time_unit,
+                     const LevelSetFilter &filter,
+                     TimerOutput          &timer);
 
     std::string
     name() const override

@@ -33,7 +33,7 @@ namespace levelsinter
   {
   public:
     VolumeDiffusion(const VolumeDiffusionParameters       &parameters,
-                    const double                           seconds_per_time_unit,
+                    const double                           seconds_per_unit,
                     const ViscousFlowParameters           &mechanics,
                     const PhaseLawParameters              &law,
                     const std::vector<types::boundary_id> &symmetry_planes,
