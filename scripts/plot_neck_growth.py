@@ -1,14 +1,17 @@
 #!/usr/bin/python3
 """Neck growth x/R against reduced time t* in log-log scales.
 
-usage: plot_neck_growth.py OUT.png [--law A,n ...] [--xlabel TEXT]
-                           LABEL=FILE.csv [...]
+usage: plot_neck_growth.py OUT.png [--law A,n ...] [--time t]
+                           [--xlabel TEXT] LABEL=FILE.csv [...]
 
 Each CSV is written by `surface_diffusion_validation neck ... --csv`
-(columns t_star, neck_over_R; R is the equivalent radius 2 R1 R2/(R1+R2)).
---law A,n adds the power law x/R = A t*^(1/n) as a dashed line, e.g. the
-paper's fit 1.3,7 (Fig. 26). --xlabel names the time axis (default
-"t* = C_s t / R^4"; volume diffusion: t* = C_v gamma t / R^3).
+(columns t, t_star, neck_over_R; R is the equivalent radius
+2 R1 R2/(R1+R2)). --law A,n adds the power law x/R = A t*^(1/n) as a
+dashed line, e.g. the paper's fit 1.3,7 (Fig. 26). --time t plots against
+the scene's time t instead of t* (runs whose t* differ, e.g. surface,
+volume and coupled diffusion, paper Fig. 47). --xlabel names the time
+axis (default "t* = C_s t / R^4", or the column given to --time; volume
+diffusion: t* = C_v gamma t / R^3).
 """
 import csv
 import sys
@@ -24,7 +27,12 @@ while "--law" in args:
     i = args.index("--law")
     laws.append([float(v) for v in args[i + 1].split(",")])
     del args[i : i + 2]
-xlabel = "t* = C_s t / R^4"
+time = "t_star"
+if "--time" in args:
+    i = args.index("--time")
+    time = args[i + 1]
+    del args[i : i + 2]
+xlabel = "t* = C_s t / R^4" if time == "t_star" else time
 if "--xlabel" in args:
     i = args.index("--xlabel")
     xlabel = args[i + 1]
@@ -36,8 +44,8 @@ fig, ax = plt.subplots(figsize=(6.5, 4.5))
 t_all = []
 for item in args[1:]:
     label, path = item.rsplit("=", 1)
-    rows = [r for r in csv.DictReader(open(path)) if float(r["t_star"]) > 0]
-    t = [float(r["t_star"]) for r in rows]
+    rows = [r for r in csv.DictReader(open(path)) if float(r[time]) > 0]
+    t = [float(r[time]) for r in rows]
     t_all += t
     ax.loglog(t, [float(r["neck_over_R"]) for r in rows], "-", label=label)
 for a, n in laws:

@@ -495,12 +495,13 @@ namespace
     const double expected = 0.6 * 8.5e-30 * 1e-17 / 1.9e-20;
     expect(std::abs(p.mobility() / expected - 1) < 1e-14,
            "C_v = (1 - f) Omega D_v / kT");
-    expect(std::abs(p.coefficient_in_time_unit(0.9) / (8e-21 / 0.9) - 1) <
-             1e-14,
-           "reduced time: R^3 / gamma");
+    expect(std::abs(p.mobility() * p.reduced_time_scale(2e-7, 0.9) /
+                      (8e-21 / 0.9) -
+                    1) < 1e-14,
+           "reduced time: C_v per unit t* = R^3 / gamma");
     expect(parse("set Enabled = true\nset Coefficient = 0.013\n")
-               .coefficient_in_time_unit(0.9) == 0.013,
-           "a given C_v in seconds");
+               .mobility() == 0.013,
+           "a given C_v");
     expect(error_of("set Enabled = true\n").find(
              "entry 'Volume diffusion/Coefficient'") == 0,
            "no coefficient and no material entries");

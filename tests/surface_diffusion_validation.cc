@@ -24,8 +24,8 @@
 // grains: on the narrowest cross-section between the centres; a packing:
 // the smallest over the neighbour pairs), x / Rbar with Rbar =
 // 2 R1 R2 / (R1 + R2) (paper Fig. 27; a packing: the mean radius),
-// t* = C_s t / Rbar^4 (volume diffusion: C_v gamma t / Rbar^3), the
-// solid-volume change and the change of the
+// t* = C_s t / Rbar^4 (with volume diffusion on, also coupled: C_v gamma
+// t / Rbar^3), the solid-volume change and the change of the
 // centre distances read off the level set (rays from each centre away
 // from its neighbours, see sample() in neck()) and the change of the
 // far-end-to-far-end length (length_change, the exits along the outward
@@ -396,17 +396,16 @@ namespace
     for (unsigned int i = 0; i < particles.size(); ++i)
       if (!neighbours[i].empty())
         directions[i] = shift_directions(centres[i], neighbours[i]);
-    // t* = C_s t / Rbar^4 (volume diffusion: C_v gamma t / Rbar^3),
-    // whatever time unit the scene runs in.
+    // t* = C_s t / Rbar^4 (volume diffusion, alone or with surface
+    // diffusion: C_v gamma t / Rbar^3), whatever time unit the scene runs
+    // in.
     const auto  &sd = scene.surface_diffusion;
     const auto  &vd = scene.volume_diffusion;
     const double gamma = scene.viscous_flow.surface_tension;
     const double t_star_per_t =
-      vd.enabled ?
-        vd.coefficient_in_time_unit(gamma) * gamma / std::pow(r_bar, 3) :
-      sd.time_unit == SurfaceDiffusionParameters::TimeUnit::reduced ?
-        std::pow(sd.reference_radius / r_bar, 4) :
-        sd.surface_mobility() / std::pow(r_bar, 4);
+      scene.seconds_per_time_unit() /
+      (vd.enabled ? vd.reduced_time_scale(r_bar, gamma) :
+                    sd.reduced_time_scale(r_bar));
 
     study::Table table({"step", "t", "t_star", "dofs", "neck", "neck_over_R",
                         "neck_position", "volume_change",

@@ -27,12 +27,15 @@ namespace levelsinter
                                            scene.phase_law));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
-        scene.surface_diffusion, filter, timer));
+        scene.surface_diffusion, scene.seconds_per_time_unit(), filter, timer));
     // SceneParameters refuses it with viscous flow and without the
-    // elastic-solid law.
+    // elastic-solid law. With surface diffusion as well (Eq. 118,
+    // Algorithm 4) the time loop adds both velocities, transports once and
+    // corrects the volume after both.
     if (scene.volume_diffusion.enabled)
       mechanisms.push_back(std::make_unique<VolumeDiffusion<dim>>(
         scene.volume_diffusion,
+        scene.seconds_per_time_unit(),
         scene.viscous_flow,
         scene.phase_law,
         scene.domain.symmetry_planes,

@@ -1,26 +1,14 @@
 #include <levelsinter/mechanisms/surface_diffusion.h>
 
-#include <cmath>
-
 namespace levelsinter
 {
-  namespace
-  {
-    double
-    coefficient_in_scene_time(const SceneParameters::SurfaceDiffusion &p)
-    {
-      if (p.time_unit == SurfaceDiffusionParameters::TimeUnit::reduced)
-        return std::pow(p.reference_radius, 4);
-      return p.surface_mobility();
-    }
-  } // namespace
-
   template <int dim>
   SurfaceDiffusion<dim>::SurfaceDiffusion(
     const SceneParameters::SurfaceDiffusion &parameters,
+    const double                             seconds_per_time_unit,
     const LevelSetFilter                    &filter,
     TimerOutput                             &timer)
-    : mobility(coefficient_in_scene_time(parameters))
+    : mobility(parameters.surface_mobility() * seconds_per_time_unit)
     , solver(filter,
              {parameters.coupled,
               parameters.linear_solver ==

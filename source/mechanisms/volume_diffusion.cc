@@ -49,14 +49,15 @@ namespace levelsinter
   template <int dim>
   VolumeDiffusion<dim>::VolumeDiffusion(
     const VolumeDiffusionParameters       &parameters,
+    const double                           seconds_per_time_unit,
     const ViscousFlowParameters           &mechanics,
     const PhaseLawParameters              &law,
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
     const unsigned int                     band_level,
     TimerOutput                           &timer)
-    : coefficient(
-        parameters.coefficient_in_time_unit(mechanics.surface_tension))
+    : coefficient(parameters.mobility() * seconds_per_time_unit)
+    , seconds_per_time_unit(seconds_per_time_unit)
     , settings(TwoPhaseStokes<dim>::Settings::from(mechanics,
                                                    symmetry_planes,
                                                    band_level))
@@ -137,7 +138,8 @@ namespace levelsinter
     // a step; where eta_f / (G dt) is small the elastic pressure does not
     // depend on it (paper Sect. 6.6: below 2e-5 the atmosphere does not
     // disturb the grains), so take the step at which that ratio is 1e-5.
-    phases->set_time_step(dt > 0 ? dt : probe_step);
+    const double dt_seconds = dt * seconds_per_time_unit;
+    phases->set_time_step(dt > 0 ? dt_seconds : probe_step);
     {
       TimerOutput::Scope scope(timer, "volume diffusion: mechanics");
       operator_->assemble(alpha, TrilinosWrappers::MPI::Vector(), 0);
@@ -146,7 +148,7 @@ namespace levelsinter
     if (dt > 0)
       {
         solved_time = t;
-        solved_step = dt;
+        solved_step = dt_seconds;
       }
 
     const unsigned int unsourced_before = extension.unsourced_interface_cells();

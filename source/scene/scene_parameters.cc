@@ -128,6 +128,20 @@ namespace levelsinter
     return cells;
   }
 
+  double
+  SceneParameters::seconds_per_time_unit() const
+  {
+    const auto &sd = surface_diffusion;
+    const auto &vd = volume_diffusion;
+    if (sd.enabled && sd.time_unit == SurfaceDiffusion::TimeUnit::reduced)
+      return sd.reduced_time_scale(sd.reference_radius);
+    if (vd.enabled &&
+        vd.time_unit == VolumeDiffusionParameters::TimeUnit::reduced)
+      return vd.reduced_time_scale(vd.reference_radius,
+                                   viscous_flow.surface_tension);
+    return 1;
+  }
+
   void
   SceneParameters::parse_parameters(ParameterHandler  &prm,
                                     const std::string &scene_directory)
@@ -206,6 +220,19 @@ namespace levelsinter
           fail_entry("Viscous flow/Surface tension",
                      "must be positive with volume diffusion: it is the "
                      "surface energy gamma that loads the elastic solid");
+        // Surface and volume diffusion together (Eq. 118, Algorithm 4) run
+        // in one time: seconds, or the one reduced time a section names.
+        if (surface_diffusion.enabled &&
+            surface_diffusion.time_unit ==
+              SurfaceDiffusion::TimeUnit::reduced &&
+            volume_diffusion.time_unit ==
+              VolumeDiffusionParameters::TimeUnit::reduced)
+          fail_entry("Volume diffusion/Time unit",
+                     "cannot be 'reduced' when 'Surface diffusion/Time "
+                     "unit' is too: a scene has one time, t* = C_s t / "
+                     "R^4 or C_v gamma t / R^3; set one of the two to "
+                     "seconds (its coefficient is then converted to the "
+                     "other's t*)");
       }
 
     // A viscoelastic melt flows: its polymer stress is part of the viscous

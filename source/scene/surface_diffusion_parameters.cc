@@ -1,6 +1,7 @@
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/surface_diffusion_parameters.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -39,7 +40,11 @@ namespace levelsinter
                         Patterns::Selection("seconds|reduced"),
                         "Unit of Time/End time and Time/Time step (the scene "
                         "time unit): seconds, or the reduced time "
-                        "t* = C_s t / R^4 with R the reference radius.");
+                        "t* = C_s t / R^4 with R the reference radius. With "
+                        "volume diffusion on as well, at most one of the "
+                        "two sections may say reduced: its t* is the "
+                        "scene's time and both coefficients are converted "
+                        "to it.");
       prm.declare_entry("Reference radius",
                         "0",
                         Patterns::Double(0),
@@ -114,5 +119,11 @@ namespace levelsinter
       return coefficient;
     return diffusivity * layer_thickness * surface_energy * atomic_volume /
            thermal_energy;
+  }
+
+  double
+  SurfaceDiffusionParameters::reduced_time_scale(const double radius) const
+  {
+    return std::pow(radius, 4) / surface_mobility();
   }
 } // namespace levelsinter

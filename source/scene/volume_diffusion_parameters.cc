@@ -30,7 +30,8 @@ namespace levelsinter
       prm.declare_entry("Coefficient",
                         "0",
                         Patterns::Double(0),
-                        "C_v [m^4/(N s)]. 0: computed as (1 - f) Omega D_v "
+                        "C_v [m^4/(N s)] (in a scene in um and MPa: "
+                        "um^2/(MPa s)). 0: computed as (1 - f) Omega D_v "
                         "/ kT from the four entries below.");
       // The material entries of C_v = (1 - f) Omega D_v / kT.
       for (const auto &[name, documentation] :
@@ -50,7 +51,10 @@ namespace levelsinter
                         "Unit of Time/End time and Time/Time step: seconds, "
                         "or the reduced time t* = C_v gamma t / R^3 with "
                         "gamma the surface energy and R the reference "
-                        "radius.");
+                        "radius. With surface diffusion on as well, at "
+                        "most one of the two sections may say reduced: "
+                        "its t* is the scene's time and both coefficients "
+                        "are converted to it.");
       prm.declare_entry("Reference radius",
                         "0",
                         Patterns::Double(0),
@@ -136,12 +140,10 @@ namespace levelsinter
   }
 
   double
-  VolumeDiffusionParameters::coefficient_in_time_unit(
+  VolumeDiffusionParameters::reduced_time_scale(
+    const double radius,
     const double surface_energy) const
   {
-    if (time_unit == TimeUnit::reduced)
-      return reference_radius * reference_radius * reference_radius /
-             surface_energy;
-    return mobility();
+    return radius * radius * radius / (mobility() * surface_energy);
   }
 } // namespace levelsinter

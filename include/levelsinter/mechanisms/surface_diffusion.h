@@ -13,15 +13,17 @@ namespace levelsinter
    * kappa / v_s system (MixedCurvatureSolver) and adds v = v_s N_alpha, with
    * N_alpha the normalised nodal average of the cell normals (Eq. 84).
    * In reduced time t* = C_s t / R^4 the flow is v_n = R^4 Delta_s kappa,
-   * so only the coefficient changes.
+   * so only the coefficient changes: C_s times the scene's seconds per
+   * time unit (SceneParameters::seconds_per_time_unit()).
    */
   template <int dim>
   class SurfaceDiffusion : public Mechanism<dim>
   {
   public:
     SurfaceDiffusion(const SceneParameters::SurfaceDiffusion &parameters,
-                     const LevelSetFilter                    &filter,
-                     TimerOutput                             &timer);
+                     const double         seconds_per_time_unit,
+                     const LevelSetFilter &filter,
+                     TimerOutput          &timer);
 
     std::string
     name() const override

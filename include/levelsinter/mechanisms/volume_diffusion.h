@@ -33,6 +33,7 @@ namespace levelsinter
   {
   public:
     VolumeDiffusion(const VolumeDiffusionParameters       &parameters,
+                    const double                           seconds_per_unit,
                     const ViscousFlowParameters           &mechanics,
                     const PhaseLawParameters              &law,
                     const std::vector<types::boundary_id> &symmetry_planes,
@@ -103,6 +104,9 @@ namespace levelsinter
     advance_displacement();
 
     const double                          coefficient; // C_v, scene time
+    // The elastic problem runs in seconds (eta_f in MPa s, Eq. 92-94)
+    // whatever the scene's time unit: dt_s = dt x this.
+    const double                          seconds_per_time_unit;
     typename TwoPhaseStokes<dim>::Settings settings;
     const std::unique_ptr<PhaseLaw<dim>>  phases;
     const double                          probe_step; // dt when given 0
@@ -118,7 +122,7 @@ namespace levelsinter
     // a time is the accepted one, known once a later time is asked for or
     // the mesh changes.
     double       solved_time          = -1;
-    double       solved_step          = 0;
+    double       solved_step          = 0; // in seconds
     unsigned int mechanics_iterations = 0;
     unsigned int xi_iterations        = 0;
     bool         warned_unsourced     = false;

@@ -69,6 +69,17 @@ namespace levelsinter
     double
     estimated_initial_cells() const;
 
+    /**
+     * Seconds per unit of the scene's time (End time, Time step): 1, or
+     * the reduced time scale of the one diffusion mechanism whose section
+     * says `Time unit = reduced` (R^4 / C_s, R^3 / (C_v gamma)). A
+     * mechanism's coefficient in the scene's time is its coefficient per
+     * second times this, so that surface and volume diffusion run in one
+     * time when both are on.
+     */
+    double
+    seconds_per_time_unit() const;
+
     unsigned int dimension = 2;
 
     DomainParameters             domain;

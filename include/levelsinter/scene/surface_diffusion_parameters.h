@@ -33,6 +33,13 @@ namespace levelsinter
     double
     surface_mobility() const;
 
+    /**
+     * Seconds per unit of the reduced time t* = C_s t / R^4 for the radius
+     * @p radius: R^4 / C_s.
+     */
+    double
+    reduced_time_scale(const double radius) const;
+
     bool         enabled          = false;
     double       coefficient      = 0; // C_s; 0: from the material entries
     double       diffusivity      = 0; // D_s

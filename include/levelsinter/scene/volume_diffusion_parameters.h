@@ -29,13 +29,12 @@ namespace levelsinter
     mobility() const;
 
     /**
-     * The C_v of Eq. 112 in the scene's time unit: C_v in seconds; in the
-     * reduced time t* = C_v gamma t / R^3 the speed per unit t* is
-     * -(R^3 / gamma) dp/dn, so R^3 / gamma, with gamma the surface energy
-     * of the mechanics.
+     * Seconds per unit of the reduced time t* = C_v gamma t / R^3 for the
+     * radius @p radius and the surface energy @p surface_energy (gamma of
+     * the mechanics): R^3 / (C_v gamma).
      */
     double
-    coefficient_in_time_unit(const double surface_energy) const;
+    reduced_time_scale(const double radius, const double surface_energy) const;
 
     bool         enabled          = false;
     double       coefficient      = 0; // C_v; 0: from the material entries
