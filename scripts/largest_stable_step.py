@@ -3,10 +3,16 @@
 
 usage: largest_stable_step.py DRIVER SCENE.prm --levels 3,4,5 --csv OUT.csv
                               [--coupled 0|1] [--steps 20] [--ratio 1.2]
-                              [--start DT] [--max-dt DT] [driver options]
+                              [--start DT] [--max-dt DT]
+                              [--rate S --scheme NAME] [driver options]
 
 DRIVER is tests/surface_diffusion_validation, SCENE a Mullins scene in
-reduced time (parameter_files/perturbed_circle_2d.prm). For each maximum
+reduced time (parameter_files/perturbed_circle_2d.prm). --rate S is the
+mode's decay rate in that reduced time, which the driver's time fraction
+is measured in (default: surface diffusion's n^2 (n^2 - 1) in 2D; volume
+diffusion of an elastic cylinder: (2/3)(1 + nu) n (n^2 - 1)); --scheme
+names the scheme in the CSV and the output (default: mixed or decoupled
+after --coupled). For each maximum
 refinement level the script runs `DRIVER mullins SCENE LEVEL STEPS` for
 STEPS steps of a given dt (through --time-fraction) and calls the step
 stable when the isoperimetric ratio L^2 / A (interface length L, area
@@ -42,12 +48,14 @@ parser.add_argument("--steps", type=int, default=20)
 parser.add_argument("--ratio", type=float, default=1.2)
 parser.add_argument("--start", type=float, default=1e-4)
 parser.add_argument("--max-dt", type=float, default=10)
+parser.add_argument("--rate", type=float)
+parser.add_argument("--scheme")
 options, extra = parser.parse_known_args()
 levels = [int(x) for x in options.levels.split(",")]
 steps, coupled = options.steps, options.coupled
 mode = int(extra[extra.index("--mode") + 1]) if "--mode" in extra else 2
-exact_rate = mode * mode * (mode * mode - 1.0)  # 2D (driver's header)
-scheme = "mixed" if coupled == "1" else "decoupled"
+exact_rate = options.rate or mode * mode * (mode * mode - 1.0)  # 2D
+scheme = options.scheme or ("mixed" if coupled == "1" else "decoupled")
 
 rows, brackets = [], []  # every trial; (level, stable, unstable)
 

@@ -20,7 +20,11 @@
 // relative to max |xi_exact|, and the orders between levels. Limits:
 // --max-error (RMS at the finest level), --max-pointwise-error,
 // --min-order (between the last two levels); every case must report no
-// unsourced interface cell. --offset sets lambda in cells (3).
+// unsourced interface cell. --offset sets lambda in cells (3). --band B:
+// the mesh is refined to LEVEL only where |d| < B h (h = 2^-LEVEL), two
+// levels coarser elsewhere, so that hanging nodes lie inside the filter
+// ramp E = 6 h (B < 4.8: inside the extension's band); --filter F sets
+// E = F h (6).
 //
 // neck: two discs of radius 0.15 at x = 0.2 and 0.8 joined by a bar 0.4
 // long and 0.08 thick, p = x, on a uniform mesh at LEVEL; --min-unsourced N
@@ -238,17 +242,33 @@ namespace
       const double                   offset,
       const double                   jump,
       const bool                     constant,
+      const double                   band,
+      const double                   thickness,
       const double                   bar = 0)
   {
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> tria(comm);
     GridGenerator::hyper_cube(tria);
-    tria.refine_global(level);
-    const double h = 1. / (1 << level);
+    const double        h = 1. / (1 << level);
+    const Distance<dim> distance(centres, ball_radius, bar);
+    if (band > 0)
+      {
+        tria.refine_global(level - 2);
+        for (unsigned int k = 0; k < 2; ++k)
+          {
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->is_locally_owned() &&
+                  std::abs(distance.value(cell->center())) <
+                    band * h + cell->diameter() / 2)
+                cell->set_refine_flag();
+            tria.execute_coarsening_and_refinement();
+          }
+      }
+    else
+      tria.refine_global(level);
 
     // E = 6 h: the filter keeps a slope to 0.8 E = 4.8 h, beyond lambda.
-    const LevelSetFilter filter(LevelSetFilter::Type::sine, 6 * h);
-    const Distance<dim>  distance(centres, ball_radius, bar);
+    const LevelSetFilter filter(LevelSetFilter::Type::sine, thickness * h);
     LevelSetField<dim>   level_set(tria);
     level_set.setup_dofs();
     level_set.interpolate(Filtered<dim>(distance, filter));
@@ -376,7 +396,9 @@ namespace
                                   level,
                                   offset,
                                   jump,
-                                  option(options, "constant", 0) > 0);
+                                  option(options, "constant", 0) > 0,
+                                  option(options, "band", 0),
+                                  option(options, "filter", 6));
         rms.push_back(r.rms_error);
         const double order =
           rms.size() > 1 ? std::log2(rms[rms.size() - 2] / rms.back()) : 0;
@@ -431,6 +453,8 @@ namespace
                             option(options, "offset", 3),
                             0,
                             option(options, "constant", 0) > 0,
+                            0,
+                            6,
                             0.04);
     if (root)
       std::cout << "two discs joined by a bar 0.08 thick, h = 1/" << (1 << level)
@@ -492,6 +516,12 @@ namespace
                          "set Extrapolation = constant\n");
     expect(!p.linear_extrapolation && p.interior_offset == 6,
            "Extrapolation = constant, default Interior offset");
+    expect(p.time_step_factor == 0.5, "default Time step factor");
+    expect(error_of("set Enabled = true\nset Coefficient = 1\n"
+                    "set Time step factor = 2\n")
+               .find("'Volume diffusion/Time step factor'") !=
+             std::string::npos,
+           "a time step factor above 1");
     const double expected = 0.6 * 8.5e-30 * 1e-17 / 1.9e-20;
     expect(std::abs(p.mobility() / expected - 1) < 1e-14,
            "C_v = (1 - f) Omega D_v / kT");

@@ -2,6 +2,8 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <levelsinter/mechanisms/volume_diffusion.h>
 
 #include <iostream>
@@ -10,6 +12,13 @@ namespace levelsinter
 {
   namespace
   {
+    // c of the explicit limit dt <= c h^3 / ((2/3)(1 + nu) C_v gamma): the
+    // largest stable step of the perturbed cylinder R = 0.25 with lambda =
+    // 6 cells (study_vd_stiffness_2d, doc/validation.md "Volume diffusion:
+    // explicit stability limit"): c = 152, 141, 130 at h = 1/64, 1/128,
+    // 1/256 (the first unstable steps 176, 163, 150); the least.
+    constexpr double measured_limit = 130;
+
     template <int dim>
     typename NormalGradientExtension<dim>::Settings
     extension_settings(const VolumeDiffusionParameters       &p,
@@ -63,6 +72,15 @@ namespace levelsinter
                                                    band_level))
     , phases(make_phase_law<dim>(law, mechanics))
     , probe_step(mechanics.fluid_viscosity / (1e-5 * law.shear_modulus))
+    , limit_per_h3([&]() {
+      const double G = law.shear_modulus, K = law.bulk_modulus;
+      const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
+      // s_n = (2/3)(1 + nu) C_v gamma n (n^2 - 1) / R^3 (doc/numerics.md):
+      // the decay rate of the finest modes, n ~ R / h, is proportional to
+      // (2/3)(1 + nu) C_v gamma / h^3.
+      return parameters.time_step_factor * measured_limit /
+             (2. / 3 * (1 + nu) * coefficient * mechanics.surface_tension);
+    }())
     , timer(timer)
     , extension(filter,
                 extension_settings<dim>(parameters, symmetry_planes),
@@ -85,6 +103,9 @@ namespace levelsinter
         alpha.dof_handler().get_triangulation(), settings, *phases);
     operator_->setup_dofs();
     extension.setup(alpha);
+    h_min = GridTools::minimal_cell_diameter(
+              alpha.dof_handler().get_triangulation()) /
+            std::sqrt(double(dim));
     solved_time = -1;
   }
 
@@ -176,6 +197,15 @@ namespace levelsinter
                                [&](const auto &cell, const unsigned int v) {
       return extension.velocity(cell->vertex_dof_index(v, 0), coefficient);
     });
+  }
+
+  template <int dim>
+  double
+  VolumeDiffusion<dim>::time_step_limit(const LevelSetField<dim> &) const
+  {
+    if (limit_per_h3 == 0)
+      return std::numeric_limits<double>::infinity();
+    return limit_per_h3 * h_min * h_min * h_min;
   }
 
   template <int dim>

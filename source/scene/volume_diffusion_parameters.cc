@@ -88,6 +88,15 @@ namespace levelsinter
                         Patterns::Integer(1),
                         "GMRES iteration limit of the extension solve; "
                         "reaching it stops the run.");
+      prm.declare_entry("Time step factor",
+                        "0.5",
+                        Patterns::Double(0),
+                        "The time step stays below this fraction of the "
+                        "explicit stability limit of v = -C_v xi N, "
+                        "measured on a perturbed cylinder: dt <= factor x "
+                        "c h_min^3 / ((2/3)(1 + nu) C_v gamma) "
+                        "(doc/numerics.md). 0: no limit (Time step and the "
+                        "CFL number alone choose dt).");
     }
     prm.leave_subsection();
   }
@@ -112,6 +121,7 @@ namespace levelsinter
     linear_extrapolation = prm.get("Extrapolation") == "linear";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
+    time_step_factor = prm.get_double("Time step factor");
     prm.leave_subsection();
 
     if (!enabled)
@@ -128,6 +138,9 @@ namespace levelsinter
       fail("Reference radius", "must be positive when Time unit = reduced");
     if (interior_offset <= 0)
       fail("Interior offset", "must be positive");
+    if (time_step_factor > 1)
+      fail("Time step factor",
+           "must be at most 1 (1 is the measured stability limit itself)");
   }
 
   double

@@ -32,9 +32,10 @@ namespace levelsinter
    * pressure is discontinuous across the interface (Laplace's jump, smeared
    * over a few cells by the continuous approximation and the ASGS
    * stabilisation), so its gradient is only read where every cell around a
-   * node lies clear of that smear: d < -lambda with lambda = `interior
-   * offset` x h_K for every cell K at the node (the derivation of the
-   * default is in doc/numerics.md, "Volume diffusion"). The values are
+   * node lies clear of that smear: d < -((lambda - 1) h_min + h_K) for
+   * every cell K at the node, lambda = `interior offset` (lambda h on a
+   * uniform mesh; the derivation is in doc/numerics.md, "Volume
+   * diffusion"). The values are
    * carried outwards along N across the interface and to the band's outer
    * edge. Carried as they are (Eq. 111), the interface sees grad p . N
    * taken lambda deeper, a first-order error -lambda d(xi)/dn; with
@@ -58,8 +59,10 @@ namespace levelsinter
 
     struct Settings
     {
-      // lambda in cell sizes h_K (edge length) of the cells around a node.
-      double       interior_offset = 3;
+      // lambda in cell sizes: a node is a source if d < -((lambda - 1)
+      // h_min + h_K) for every cell K at it. 6: `Volume diffusion/Interior
+      // offset`'s default; the xi tests set their own (3).
+      double       interior_offset = 6;
       // Carry g - d eta and eta = d g / dn along N and add them up as
       // xi = (g - d eta) + d eta at each node (linear extrapolation, second
       // order), or g alone (the paper's constant extension, first order).

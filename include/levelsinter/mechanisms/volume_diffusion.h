@@ -63,6 +63,14 @@ namespace levelsinter
     add_state(const LevelSetField<dim> &alpha,
               StateTransfer<dim>       &transfer) override;
 
+    /**
+     * The explicit stability limit of v = -C_v xi N (measured, h^3):
+     * dt <= f c_s h_min^3 / ((2/3)(1 + nu) C_v gamma), f = `Time step
+     * factor` (doc/numerics.md, "Volume diffusion"). Infinity if f = 0.
+     */
+    double
+    time_step_limit(const LevelSetField<dim> &alpha) const override;
+
     /** Pressure, xi, displacement and velocity of the last step. */
     void
     add_output_fields(const LevelSetField<dim> &alpha,
@@ -110,6 +118,9 @@ namespace levelsinter
     typename TwoPhaseStokes<dim>::Settings settings;
     const std::unique_ptr<PhaseLaw<dim>>  phases;
     const double                          probe_step; // dt when given 0
+    // f / ((2/3)(1 + nu) C_v gamma) of time_step_limit(); 0: no limit.
+    const double                          limit_per_h3;
+    double                                h_min = 0; // after setup()
     TimerOutput                          &timer;
     std::unique_ptr<TwoPhaseStokes<dim>>  operator_;
     NormalGradientExtension<dim>          extension;

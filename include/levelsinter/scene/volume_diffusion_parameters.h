@@ -52,5 +52,9 @@ namespace levelsinter
     bool         linear_extrapolation = true;  // or constant (Eq. 111)
     double       solver_tolerance = 1e-10;
     unsigned int max_iterations   = 1000;
+    // Fraction of the measured explicit stability limit of v = -C_v xi N
+    // the time step is kept below (VolumeDiffusion::time_step_limit());
+    // 0: no limit.
+    double       time_step_factor = 0.5;
   };
 } // namespace levelsinter
