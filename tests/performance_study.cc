@@ -18,6 +18,7 @@
 #include "study_table.h"
 
 #include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <map>
@@ -71,6 +72,7 @@ namespace
     overrides.emplace_back("Time/Maximum steps", std::to_string(steps));
     const SceneParameters scene = read_scene(scene_file, overrides);
     const MPI_Comm        comm  = MPI_COMM_WORLD;
+    std::filesystem::create_directories(scene.output.directory);
     Simulation<dim>       simulation(scene, comm, std::cout);
     std::map<std::string, double> wall_1, cpu_1;
     unsigned int                  metrics_calls = 0;
@@ -177,12 +179,15 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const std::vector<std::string>   args(argv, argv + argc);
+  if (args.size() < 3)
+    {
+      std::cerr << "usage: performance_study SCENE STEPS --csv FILE "
+                   "[--set ...]\n";
+      return 1;
+    }
   try
     {
-      const std::vector<std::string> args(argv, argv + argc);
-      if (args.size() < 3)
-        throw std::runtime_error(
-          "usage: performance_study SCENE STEPS --csv FILE [--set ...]");
       const auto         options = study::parse_options(args, 3);
       const unsigned int steps   = std::stoul(args[2]);
       if (read_scene(args[1], options.overrides).dimension == 2)
