@@ -4,7 +4,8 @@ the particle count and project it (doc/performance.md).
 
 usage: plot_performance.py --csv OUT.csv --png OUT.png RUN.csv [RUN.csv ...]
 
-The 2-rank runs give the curve: CPU and wall seconds per step against N,
+Input files that do not exist (runs not made) are skipped. The 2-rank
+runs give the curve: CPU and wall seconds per step against N,
 with the least-squares power law c N^b of the CPU time. Printed: that law,
 the 1 -> 2 rank speed-up where a particle count has both, and the
 projection of the CPU time to the paper's 550 steps and to 1 000 and
@@ -12,6 +13,7 @@ projection of the CPU time to the paper's 550 steps and to 1 000 and
 """
 import csv
 import math
+import os
 import sys
 
 import matplotlib
@@ -27,6 +29,10 @@ inputs = [a for i, a in enumerate(args)
 
 rows = []
 for path in inputs:
+    # A run that was not made (a long one skipped) is reported, not fatal.
+    if not os.path.exists(path):
+        print(f"not run: {path}")
+        continue
     rows += list(csv.DictReader(open(path)))
 columns = list(rows[0].keys())
 rows.sort(key=lambda r: (float(r["particles"]), float(r["ranks"])))
@@ -62,7 +68,22 @@ for count in sorted(set(float(r["particles"]) for r in rows)):
 for count in (154, 1000, 10000):
     per_step = c * count ** b
     print(f"N = {count}: {per_step:.4g} CPU s per step, 550 steps "
-          f"{550 * per_step / 3600:.4g} CPU h")
+          f"{550 * per_step / 3600:.4g} CPU h (power law)")
+# Linear in the DoFs (the solvers' work per DoF and step held fixed): the
+# CPU per DoF and step and the DoFs per particle of the largest run, and
+# the CPU per DoF and step of every run for comparison.
+for r in rows:
+    print(f"N = {float(r['particles']):.0f}, {float(r['ranks']):.0f} rank(s): "
+          f"{float(r['cpu_per_step']) / float(r['dofs']):.3g} CPU s per DoF "
+          f"and step, {float(r['dofs_per_particle']):.0f} DoFs per particle")
+largest = two[-1]
+per_dof = float(largest["cpu_per_step"]) / float(largest["dofs"])
+per_particle = float(largest["dofs_per_particle"])
+for count in (154, 1000, 10000):
+    per_step = per_dof * per_particle * count
+    print(f"N = {count}: {per_particle * count:.3g} DoFs, {per_step:.4g} "
+          f"CPU s per step, 550 steps {550 * per_step / 3600:.4g} CPU h "
+          f"(linear in the DoFs of N = {float(largest['particles']):.0f})")
 
 fig, ax = plt.subplots(figsize=(6.5, 4.5))
 ax.loglog(n, cpu, "o", label="CPU s per step (both ranks)")
