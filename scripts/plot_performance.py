@@ -5,8 +5,9 @@ the particle count and project it (doc/performance.md).
 usage: plot_performance.py --csv OUT.csv --png OUT.png RUN.csv [RUN.csv ...]
 
 Input files that do not exist (runs not made) are skipped. The 2-rank
-runs give the curve: CPU and wall seconds per step against N,
-with the least-squares power law c N^b of the CPU time. Printed: that law,
+runs give the curve: CPU and wall seconds per step against N, and the
+projection linear in the DoFs from the largest run. Printed: the
+least-squares power law c N^b of the CPU time,
 the 1 -> 2 rank speed-up where a particle count has both, and the
 projection of the CPU time to the paper's 550 steps and to 1 000 and
 10 000 particles (the same DoFs per particle and steps per neck growth).
@@ -89,8 +90,9 @@ fig, ax = plt.subplots(figsize=(6.5, 4.5))
 ax.loglog(n, cpu, "o", label="CPU s per step (both ranks)")
 ax.loglog(n, wall, "s", label="wall s per step (shared cores)")
 grid = [8 * (10000 / 8) ** (k / 50) for k in range(51)]
-ax.loglog(grid, [c * x ** b for x in grid], "-", color="C0",
-          label=f"CPU fit {c:.3g} N^{b:.2f}")
+ax.loglog(grid, [per_dof * per_particle * x for x in grid], "-", color="C0",
+          label=f"CPU linear in the DoFs of N = "
+          f"{float(largest['particles']):.0f}")
 ax.set_xlabel("particles N (h_min = 0.0094 um, 2 MPI ranks)")
 ax.set_ylabel("seconds per step")
 ax.grid(True, which="both", alpha=0.3)
