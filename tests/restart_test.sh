@@ -5,7 +5,8 @@
 # The scene run uninterrupted on NP_FIRST ranks, then again killed with
 # SIGKILL once its checkpoint at step 10 exists and resumed on NP_RESUME
 # ranks: the two metrics.csv must agree to TOLERANCE in every column but
-# the IGNORED ones (see tests/restart.cmake).
+# the IGNORED ones (see tests/restart.cmake), and so must the packing
+# analysis' files if the scene writes them.
 set -u
 levelsinter=$1 compare=$2 mpirun=$3 flags=${4//;/ } scene=$5
 np_first=$6 np_resume=$7 work=$8 tolerance=$9 ignored=${10//;/ }
@@ -46,4 +47,20 @@ launch "$np_resume" --resume killed > resumed.log 2>&1 ||
   { cat resumed.log; exit 1; }
 grep -E "resumed|checkpoint" resumed.log | head -3
 # shellcheck disable=SC2086
-"$compare" reference/metrics.csv killed/metrics.csv "$tolerance" $ignored
+"$compare" reference/metrics.csv killed/metrics.csv "$tolerance" $ignored ||
+  exit 1
+# The packing analysis' files, if the scene has it: necks.csv and pores.csv
+# to the same tolerance (not the pore centroids, which are round-off on a
+# symmetry centre), pore_events.csv line by line (step, event, pore id).
+for table in necks pores; do
+  [ -f reference/$table.csv ] || continue
+  echo "$table.csv:"
+  "$compare" reference/$table.csv killed/$table.csv "$tolerance" \
+    centroid_x centroid_y centroid_z || exit 1
+done
+if [ -f reference/pore_events.csv ]; then
+  diff <(cut -d, -f2-4 reference/pore_events.csv) \
+    <(cut -d, -f2-4 killed/pore_events.csv) ||
+    { echo "FAIL: pore_events.csv differs"; exit 1; }
+  echo "pore_events.csv: $(($(wc -l < killed/pore_events.csv) - 1)) events agree"
+fi

@@ -7,49 +7,172 @@
 
 namespace levelsinter::neck_measures
 {
-  using interface_measures::exit_distances;
+  using interface_measures::Ray;
+  using interface_measures::RayCaster;
 
   namespace
   {
-    // Mean exit distance from the point c1 + s (c2 - c1) over rays in the
-    // plane through it normal to c2 - c1 (2 rays in 2D, 8 in 3D). Rays that
-    // leave the domain before meeting the interface (symmetry planes) are
-    // skipped.
+    // The cross-section of the pair (c1, c2) at c1 + s (c2 - c1).
     template <int dim>
-    double
-    cross_section_radius(const LevelSetField<dim> &level_set,
-                         const Point<dim>         &c1,
-                         const Point<dim>         &c2,
-                         const double              s)
+    struct Section
     {
-      const Tensor<1, dim> axis = (c2 - c1) / (c2 - c1).norm();
-      std::vector<Tensor<1, dim>> directions;
-      if constexpr (dim == 2)
+      Point<dim> c1, c2;
+      double     s;
+    };
+
+    // Mean exit distance from each section's point over rays in the plane
+    // through it normal to c2 - c1 (2 rays in 2D, 8 in 3D), all sections
+    // in one pass of the caster. Rays that leave the domain before meeting
+    // the interface (symmetry planes) are skipped; 0 if all do.
+    template <int dim>
+    std::vector<double>
+    cross_section_radii(const RayCaster<dim>             &caster,
+                        const std::vector<Section<dim>> &sections)
+    {
+      const unsigned int    n_rays = dim == 2 ? 2 : 8;
+      std::vector<Ray<dim>> rays;
+      for (const auto &[c1, c2, s] : sections)
         {
-          const Tensor<1, dim> t({-axis[1], axis[0]});
-          directions = {t, -t};
+          const Tensor<1, dim> axis   = (c2 - c1) / (c2 - c1).norm();
+          const Point<dim>     origin = c1 + s * (c2 - c1);
+          if constexpr (dim == 2)
+            {
+              const Tensor<1, dim> t({-axis[1], axis[0]});
+              rays.push_back({origin, t});
+              rays.push_back({origin, -t});
+            }
+          else
+            {
+              Tensor<1, dim> helper;
+              helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
+              Tensor<1, dim> u = cross_product_3d(axis, helper);
+              u /= u.norm();
+              const Tensor<1, dim> w = cross_product_3d(axis, u);
+              for (unsigned int k = 0; k < n_rays; ++k)
+                rays.push_back({origin,
+                                std::cos(k * M_PI / 4) * u +
+                                  std::sin(k * M_PI / 4) * w});
+            }
         }
-      else
+      const std::vector<double> exits = caster.exit_distances(rays);
+      std::vector<double>       radii;
+      for (unsigned int i = 0; i < sections.size(); ++i)
         {
-          Tensor<1, dim> helper;
-          helper[std::abs(axis[0]) < 0.9 ? 0 : 1] = 1;
-          Tensor<1, dim> u = cross_product_3d(axis, helper);
-          u /= u.norm();
-          const Tensor<1, dim> w = cross_product_3d(axis, u);
-          for (unsigned int k = 0; k < 8; ++k)
-            directions.push_back(std::cos(k * M_PI / 4) * u +
-                                 std::sin(k * M_PI / 4) * w);
+          double       sum     = 0;
+          unsigned int n_valid = 0;
+          for (unsigned int k = i * n_rays; k < (i + 1) * n_rays; ++k)
+            if (std::isfinite(exits[k]))
+              {
+                sum += exits[k];
+                ++n_valid;
+              }
+          radii.push_back(n_valid ? sum / n_valid : 0.);
         }
-      double       sum     = 0;
-      unsigned int n_valid = 0;
-      for (const double d :
-           exit_distances(level_set, c1 + s * (c2 - c1), directions))
-        if (std::isfinite(d))
-          {
-            sum += d;
-            ++n_valid;
-          }
-      return n_valid ? sum / n_valid : 0.;
+      return radii;
+    }
+
+    // narrowest_neck() of several pairs at once: the searches advance in
+    // step, so that each round is one pass of the caster (one reduction
+    // over the ranks) for all pairs.
+    template <int dim>
+    std::vector<Neck>
+    narrowest_necks(const RayCaster<dim>                                &caster,
+                    const std::vector<std::pair<Point<dim>, Point<dim>>> &pairs)
+    {
+      // The cross-section radius falls from the first centre to the neck
+      // and rises again to the second: a scan brackets the minimum, a
+      // golden-section search narrows the bracket to 1e-4 of the centre
+      // distance (the radius is flat there, so its error is of second
+      // order).
+      const unsigned int        n_scan = 16;
+      std::vector<Section<dim>> sections;
+      for (const auto &[c1, c2] : pairs)
+        for (unsigned int k = 1; k < n_scan; ++k)
+          sections.push_back({c1, c2, double(k) / n_scan});
+      const std::vector<double> scan = cross_section_radii(caster, sections);
+
+      struct Search
+      {
+        double a, b, x1, x2, f1, f2, r_best;
+        bool   new_x1; // which point the round evaluates
+      };
+      const double        golden = (std::sqrt(5.) - 1) / 2;
+      std::vector<Search> searches;
+      sections.clear();
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        {
+          auto radius = [&](const unsigned int k) {
+            return scan[p * (n_scan - 1) + k - 1];
+          };
+          unsigned int best = 1;
+          for (unsigned int k = 2; k < n_scan; ++k)
+            if (radius(k) < radius(best))
+              best = k;
+          Search      search;
+          search.r_best = radius(best);
+          search.a      = double(best - 1) / n_scan;
+          search.b      = double(best + 1) / n_scan;
+          search.x1     = search.b - golden * (search.b - search.a);
+          search.x2     = search.a + golden * (search.b - search.a);
+          searches.push_back(search);
+          sections.push_back({pairs[p].first, pairs[p].second, search.x1});
+          sections.push_back({pairs[p].first, pairs[p].second, search.x2});
+        }
+      const std::vector<double> initial = cross_section_radii(caster, sections);
+      for (unsigned int p = 0; p < pairs.size(); ++p)
+        {
+          searches[p].f1 = initial[2 * p];
+          searches[p].f2 = initial[2 * p + 1];
+        }
+
+      std::vector<unsigned int> active;
+      while (true)
+        {
+          active.clear();
+          sections.clear();
+          for (unsigned int p = 0; p < pairs.size(); ++p)
+            if (Search &q = searches[p]; q.b - q.a > 1e-4)
+              {
+                q.new_x1 = q.f1 < q.f2;
+                if (q.new_x1)
+                  {
+                    q.b  = q.x2;
+                    q.x2 = q.x1;
+                    q.f2 = q.f1;
+                    q.x1 = q.b - golden * (q.b - q.a);
+                  }
+                else
+                  {
+                    q.a  = q.x1;
+                    q.x1 = q.x2;
+                    q.f1 = q.f2;
+                    q.x2 = q.a + golden * (q.b - q.a);
+                  }
+                active.push_back(p);
+                sections.push_back({pairs[p].first,
+                                    pairs[p].second,
+                                    q.new_x1 ? q.x1 : q.x2});
+              }
+          if (active.empty())
+            break;
+          const std::vector<double> radii =
+            cross_section_radii(caster, sections);
+          for (unsigned int i = 0; i < active.size(); ++i)
+            {
+              Search &q                   = searches[active[i]];
+              (q.new_x1 ? q.f1 : q.f2) = radii[i];
+            }
+        }
+
+      std::vector<Neck> necks;
+      for (const Search &q : searches)
+        {
+          Neck neck;
+          neck.position = q.f1 < q.f2 ? q.x1 : q.x2;
+          neck.radius   = std::min({q.f1, q.f2, q.r_best});
+          necks.push_back(neck);
+        }
+      return necks;
     }
   } // namespace
 
@@ -59,7 +182,7 @@ namespace levelsinter::neck_measures
               const Point<dim>         &c1,
               const Point<dim>         &c2)
   {
-    return cross_section_radius(level_set, c1, c2, 0.5);
+    return cross_section_radii(RayCaster<dim>(level_set), {{c1, c2, 0.5}})[0];
   }
 
   template <int dim>
@@ -68,54 +191,20 @@ namespace levelsinter::neck_measures
                  const Point<dim>         &c1,
                  const Point<dim>         &c2)
   {
-    // The cross-section radius falls from the first centre to the neck and
-    // rises again to the second: a scan brackets the minimum, a golden-
-    // section search narrows the bracket to 1e-4 of the centre distance
-    // (the radius is flat there, so its error is of second order).
-    auto         radius  = [&](const double s) {
-      return cross_section_radius(level_set, c1, c2, s);
-    };
-    const unsigned int n_scan = 16;
-    unsigned int       best   = 1;
-    double             r_best = radius(1. / n_scan);
-    for (unsigned int k = 2; k < n_scan; ++k)
-      if (const double r = radius(double(k) / n_scan); r < r_best)
-        {
-          r_best = r;
-          best   = k;
-        }
-    const double golden = (std::sqrt(5.) - 1) / 2;
-    double       a = double(best - 1) / n_scan, b = double(best + 1) / n_scan;
-    double       x1 = b - golden * (b - a), x2 = a + golden * (b - a);
-    double       f1 = radius(x1), f2 = radius(x2);
-    while (b - a > 1e-4)
-      if (f1 < f2)
-        {
-          b  = x2;
-          x2 = x1;
-          f2 = f1;
-          x1 = b - golden * (b - a);
-          f1 = radius(x1);
-        }
-      else
-        {
-          a  = x1;
-          x1 = x2;
-          f1 = f2;
-          x2 = a + golden * (b - a);
-          f2 = radius(x2);
-        }
-    Neck neck;
-    neck.position = f1 < f2 ? x1 : x2;
-    neck.radius   = std::min({f1, f2, r_best});
-    return neck;
+    return narrowest_necks(RayCaster<dim>(level_set), {{c1, c2}})[0];
   }
+
   template <int dim>
   std::vector<PairNeck>
   pair_necks(const LevelSetField<dim>               &level_set,
              const std::vector<std::vector<double>> &particles)
   {
-    std::vector<PairNeck> necks;
+    // Equal particles neck on the mid-plane (by symmetry, and exactly on
+    // symmetric meshes); unequal ones on their narrowest cross-section,
+    // which a search finds.
+    std::vector<PairNeck>                              equal, unequal;
+    std::vector<Section<dim>>                          mid_planes;
+    std::vector<std::pair<Point<dim>, Point<dim>>>     searched;
     for (unsigned int i = 0; i < particles.size(); ++i)
       for (unsigned int j = i + 1; j < particles.size(); ++j)
         {
@@ -127,16 +216,46 @@ namespace levelsinter::neck_measures
             }
           if (particles.size() == 2 ||
               c1.distance(c2) < particles[i][dim] + particles[j][dim])
-            // Equal particles neck on the mid-plane (by symmetry, and
-            // exactly on symmetric meshes); unequal ones on their narrowest
-            // cross-section, which a search finds.
-            necks.push_back({i,
-                             j,
-                             particles[i][dim] == particles[j][dim] ?
-                               neck_radius(level_set, c1, c2) :
-                               narrowest_neck(level_set, c1, c2).radius});
+            {
+              if (particles[i][dim] == particles[j][dim])
+                {
+                  equal.push_back({i, j, 0.});
+                  mid_planes.push_back({c1, c2, 0.5});
+                }
+              else
+                {
+                  unequal.push_back({i, j, 0.});
+                  searched.emplace_back(c1, c2);
+                }
+            }
         }
+    const RayCaster<dim>      caster(level_set);
+    const std::vector<double> mid = cross_section_radii(caster, mid_planes);
+    const std::vector<Neck>   narrowest = narrowest_necks(caster, searched);
+    for (unsigned int k = 0; k < equal.size(); ++k)
+      equal[k].radius = mid[k];
+    for (unsigned int k = 0; k < unequal.size(); ++k)
+      unequal[k].radius = narrowest[k].radius;
+    // In the order of the pairs (i, j).
+    std::vector<PairNeck> necks;
+    std::merge(equal.begin(),
+               equal.end(),
+               unequal.begin(),
+               unequal.end(),
+               std::back_inserter(necks),
+               [](const PairNeck &x, const PairNeck &y) {
+                 return std::make_pair(x.i, x.j) < std::make_pair(y.i, y.j);
+               });
     return necks;
+  }
+
+  double
+  smallest_neck_radius(const std::vector<PairNeck> &necks)
+  {
+    double neck = std::numeric_limits<double>::quiet_NaN();
+    for (const PairNeck &pair : necks)
+      neck = std::fmin(neck, pair.radius);
+    return neck;
   }
 
   template <int dim>
@@ -144,10 +263,7 @@ namespace levelsinter::neck_measures
   smallest_neck_radius(const LevelSetField<dim>               &level_set,
                        const std::vector<std::vector<double>> &particles)
   {
-    double neck = std::numeric_limits<double>::quiet_NaN();
-    for (const PairNeck &pair : pair_necks(level_set, particles))
-      neck = std::fmin(neck, pair.radius);
-    return neck;
+    return smallest_neck_radius(pair_necks(level_set, particles));
   }
 
   template double

@@ -6,9 +6,7 @@
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <cmath>
-#include <iomanip>
 #include <limits>
-#include <stdexcept>
 
 namespace levelsinter
 {
@@ -36,6 +34,7 @@ namespace levelsinter
                   std::vector<std::vector<double>>())
     , symmetry_boundaries(scene.domain.symmetry_planes)
     , comm(comm)
+    , directory(scene.output.directory)
   {
     if (!particles.empty())
       centres = UnionOfBalls<dim>(particles).centres();
@@ -81,28 +80,35 @@ namespace levelsinter
       if (spread(centres, d) > 0)
         shrinkage_axes.push_back(d);
 
-    const std::string &directory = scene.output.directory;
-    if (directory.empty())
-      return;
+  }
+
+  template <int dim>
+  void
+  PackingAnalysis<dim>::open_logs()
+  {
+    auto kept = [this](const unsigned int log) {
+      return kept_rows ? std::optional<unsigned int>((*kept_rows)[log]) :
+                         std::nullopt;
+    };
     necks_log = std::make_unique<MetricsLog>(
       directory + "/necks.csv",
       std::vector<std::string>{"step", "time", "particle_i", "particle_j",
                                "neck_radius"},
-      comm);
+      comm,
+      kept(0));
     std::vector<std::string> pore_columns = {
       "step", "time", "pore", "open", "volume", "area", "sphericity"};
     for (unsigned int d = 0; d < dim; ++d)
       pore_columns.push_back(std::string("centroid_") + "xyz"[d]);
-    pores_log =
-      std::make_unique<MetricsLog>(directory + "/pores.csv", pore_columns, comm);
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        events_log.open(directory + "/pore_events.csv");
-        if (!events_log)
-          throw std::runtime_error("cannot write '" + directory +
-                                   "/pore_events.csv'");
-        events_log << "time,step,event,pore,volume" << std::endl;
-      }
+    pores_log = std::make_unique<MetricsLog>(directory + "/pores.csv",
+                                             pore_columns,
+                                             comm,
+                                             kept(1));
+    events_log = std::make_unique<MetricsLog>(
+      directory + "/pore_events.csv",
+      std::vector<std::string>{"time", "step", "event", "pore", "volume"},
+      comm,
+      kept(2));
   }
 
   template <int dim>
@@ -251,8 +257,10 @@ namespace levelsinter
       row.push_back(spread(solid.centroids, shrinkage_axes[a]) /
                     initial_spread[a]);
 
-    if (necks_log)
+    if (!directory.empty())
       {
+        if (!necks_log)
+          open_logs();
         for (const auto &neck : necks)
           necks_log->add_row(
             {double(step), t, double(neck.i), double(neck.j), neck.radius});
@@ -269,14 +277,12 @@ namespace levelsinter
               values.push_back(pores[p].centroid[d]);
             pores_log->add_row(values);
           }
-        if (events_log.is_open())
-          {
-            events_log << std::setprecision(12);
-            for (const auto &event : events)
-              events_log << t << ',' << step << ',' << event.name << ','
-                         << event.pore << ',' << event.volume << '\n';
-            events_log.flush();
-          }
+        for (const auto &event : events)
+          events_log->add_text_row({MetricsLog::format(t),
+                                    std::to_string(step),
+                                    event.name,
+                                    std::to_string(event.pore),
+                                    MetricsLog::format(event.volume)});
       }
     return row;
   }

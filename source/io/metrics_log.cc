@@ -60,14 +60,30 @@ namespace levelsinter
   void
   MetricsLog::add_row(const std::vector<double> &values)
   {
-    if (values.size() != column_names.size())
+    std::vector<std::string> cells;
+    for (const double value : values)
+      cells.push_back(format(value));
+    add_text_row(cells);
+  }
+
+  void
+  MetricsLog::add_text_row(const std::vector<std::string> &cells)
+  {
+    if (cells.size() != column_names.size())
       throw std::logic_error("metrics row has the wrong number of columns");
     ++rows;
     if (!root)
       return;
-    out << std::setprecision(12);
-    for (unsigned int i = 0; i < values.size(); ++i)
-      out << (i ? "," : "") << values[i];
+    for (unsigned int i = 0; i < cells.size(); ++i)
+      out << (i ? "," : "") << cells[i];
     out << std::endl;
+  }
+
+  std::string
+  MetricsLog::format(const double value)
+  {
+    std::ostringstream text;
+    text << std::setprecision(12) << value;
+    return text.str();
   }
 } // namespace levelsinter

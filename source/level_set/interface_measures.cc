@@ -10,13 +10,17 @@
 #include <deal.II/non_matching/fe_values.h>
 #include <deal.II/non_matching/mesh_classifier.h>
 
+#include <deal.II/boost_adaptors/segment.h>
+
 #include <levelsinter/level_set/interface_measures.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <utility>
 #include <cmath>
 #include <limits>
+#include <tuple>
 
 namespace levelsinter::interface_measures
 {
@@ -216,101 +220,140 @@ namespace levelsinter::interface_measures
   }
 
   template <int dim>
+  RayCaster<dim>::RayCaster(const LevelSetField<dim> &level_set)
+    : level_set(level_set)
+  {
+    std::vector<std::pair<BoundingBox<dim>, Cell>> boxes;
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          boxes.emplace_back(cell->bounding_box(), cell);
+          if (boxes.size() == 1)
+            extent = boxes[0].first;
+          extent.merge_with(boxes.back().first);
+        }
+    tree = pack_rtree(boxes);
+  }
+
+  template <int dim>
   std::vector<double>
-  exit_distances(const LevelSetField<dim>          &level_set,
-                 const Point<dim>                  &origin,
-                 const std::vector<Tensor<1, dim>> &directions)
+  RayCaster<dim>::exit_distances(const std::vector<Ray<dim>> &rays) const
   {
     constexpr double infinity = std::numeric_limits<double>::infinity();
     // Per ray: first crossing from solid to pore, and from pore to solid.
-    std::vector<double> leaving(directions.size(), infinity);
-    std::vector<double> entering(directions.size(), infinity);
-
-    const auto &dofs = level_set.dof_handler();
+    std::vector<double> leaving(rays.size(), infinity);
+    std::vector<double> entering(rays.size(), infinity);
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const BoundingBox<dim> box = cell->bounding_box();
-          bool                   indices_read = false;
-          for (unsigned int r = 0; r < directions.size(); ++r)
-            {
-              // Slab test: the part [s0, s1] of the ray inside the box.
-              double s0 = 0, s1 = infinity;
-              for (unsigned int d = 0; d < dim && s0 <= s1; ++d)
+    std::vector<std::pair<BoundingBox<dim>, Cell>> hits;
+    // (entry s0, exit s1, hit) of the boxes the ray crosses.
+    std::vector<std::tuple<double, double, unsigned int>> crossed;
+    for (unsigned int r = 0; r < rays.size() && !tree.empty(); ++r)
+      {
+        const Point<dim>     &origin    = rays[r].origin;
+        const Tensor<1, dim> &direction = rays[r].direction;
+        // A segment long enough to leave every local cell.
+        const double reach =
+          origin.distance(extent.center()) +
+          extent.get_boundary_points().first.distance(
+            extent.get_boundary_points().second);
+        hits.clear();
+        tree.query(boost::geometry::index::intersects(
+                     Segment<dim>(origin, origin + reach * direction)),
+                   std::back_inserter(hits));
+        crossed.clear();
+        for (unsigned int h = 0; h < hits.size(); ++h)
+          {
+            // Slab test: the part [s0, s1] of the ray inside the box.
+            const auto &[lower, upper] = hits[h].first.get_boundary_points();
+            double s0 = 0, s1 = infinity;
+            for (unsigned int d = 0; d < dim && s0 <= s1; ++d)
+              if (std::abs(direction[d]) < 1e-14)
                 {
-                  const double lo = box.get_boundary_points().first[d];
-                  const double hi = box.get_boundary_points().second[d];
-                  if (std::abs(directions[r][d]) < 1e-14)
-                    {
-                      if (origin[d] < lo || origin[d] > hi)
-                        s1 = -1;
-                    }
-                  else
-                    {
-                      double a = (lo - origin[d]) / directions[r][d];
-                      double b = (hi - origin[d]) / directions[r][d];
-                      if (a > b)
-                        std::swap(a, b);
-                      s0 = std::max(s0, a);
-                      s1 = std::min(s1, b);
-                    }
+                  if (origin[d] < lower[d] || origin[d] > upper[d])
+                    s1 = -1;
                 }
-              if (!(s0 <= s1))
-                continue;
-              if (!indices_read)
+              else
                 {
-                  cell->get_dof_indices(indices);
-                  indices_read = true;
+                  double a = (lower[d] - origin[d]) / direction[d];
+                  double b = (upper[d] - origin[d]) / direction[d];
+                  if (a > b)
+                    std::swap(a, b);
+                  s0 = std::max(s0, a);
+                  s1 = std::min(s1, b);
                 }
-              // Along a line alpha_h is a polynomial of degree <= dim in s;
-              // 8 sub-intervals separate its roots on a cell, bisection
-              // locates each to rounding.
-              const unsigned int n_sub = 8;
-              auto               at    = [&](const double s) {
-                return value_in_cell<dim>(level_set,
-                                          cell,
-                                          indices,
-                                          origin + s * directions[r]);
-              };
-              double a_prev = at(s0);
-              for (unsigned int k = 1; k <= n_sub; ++k)
-                {
-                  const double s_lo = s0 + (s1 - s0) * (k - 1) / n_sub;
-                  const double s_hi = s0 + (s1 - s0) * k / n_sub;
-                  const double a_hi = at(s_hi);
-                  if ((a_prev < 0) != (a_hi < 0))
-                    {
-                      double lo = s_lo, hi = s_hi, f_lo = a_prev;
-                      for (unsigned int it = 0; it < 60; ++it)
-                        {
-                          const double mid   = 0.5 * (lo + hi);
-                          const double f_mid = at(mid);
-                          if ((f_mid < 0) == (f_lo < 0))
-                            {
-                              lo   = mid;
-                              f_lo = f_mid;
-                            }
-                          else
-                            hi = mid;
-                        }
-                      auto &target = (a_prev < 0) ? leaving[r] : entering[r];
-                      target       = std::min(target, 0.5 * (lo + hi));
-                    }
-                  a_prev = a_hi;
-                }
-            }
-        }
+            if (s0 <= s1)
+              crossed.emplace_back(s0, s1, h);
+          }
+        // From the origin outwards; a cell entered beyond the first
+        // crossing found cannot hold an earlier one.
+        std::sort(crossed.begin(), crossed.end());
+        for (const auto &[s0, s1, h] : crossed)
+          {
+            if (s0 > std::min(leaving[r], entering[r]))
+              break;
+            const Cell &cell = hits[h].second;
+            cell->get_dof_indices(indices);
+            // Along a line alpha_h is a polynomial of degree <= dim in s;
+            // 8 sub-intervals separate its roots on a cell, bisection
+            // locates each to rounding.
+            const unsigned int n_sub = 8;
+            auto               at    = [&, s0 = s0, s1 = s1](const double s) {
+              return value_in_cell<dim>(level_set,
+                                        cell,
+                                        indices,
+                                        origin + s * direction);
+            };
+            double a_prev = at(s0);
+            for (unsigned int k = 1; k <= n_sub; ++k)
+              {
+                const double s_lo = s0 + (s1 - s0) * (k - 1) / n_sub;
+                const double s_hi = s0 + (s1 - s0) * k / n_sub;
+                const double a_hi = at(s_hi);
+                if ((a_prev < 0) != (a_hi < 0))
+                  {
+                    double lo = s_lo, hi = s_hi, f_lo = a_prev;
+                    for (unsigned int it = 0; it < 60; ++it)
+                      {
+                        const double mid   = 0.5 * (lo + hi);
+                        const double f_mid = at(mid);
+                        if ((f_mid < 0) == (f_lo < 0))
+                          {
+                            lo   = mid;
+                            f_lo = f_mid;
+                          }
+                        else
+                          hi = mid;
+                      }
+                    auto &target = (a_prev < 0) ? leaving[r] : entering[r];
+                    target       = std::min(target, 0.5 * (lo + hi));
+                  }
+                a_prev = a_hi;
+              }
+          }
+      }
 
-    const MPI_Comm comm = dofs.get_communicator();
+    // Each rank found its first crossing of each ray (or none); the
+    // nearest over the ranks decides, as if one rank had walked it all.
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
     Utilities::MPI::min(leaving, comm, leaving);
     Utilities::MPI::min(entering, comm, entering);
-    for (unsigned int r = 0; r < directions.size(); ++r)
+    for (unsigned int r = 0; r < rays.size(); ++r)
       if (entering[r] < leaving[r])
         leaving[r] = 0; // the origin lies in the pore
     return leaving;
   }
 
+  template <int dim>
+  std::vector<double>
+  exit_distances(const LevelSetField<dim>          &level_set,
+                 const Point<dim>                  &origin,
+                 const std::vector<Tensor<1, dim>> &directions)
+  {
+    std::vector<Ray<dim>> rays;
+    for (const auto &direction : directions)
+      rays.push_back({origin, direction});
+    return RayCaster<dim>(level_set).exit_distances(rays);
+  }
 
   template <int dim>
   GradientNormError
@@ -374,6 +417,8 @@ namespace levelsinter::interface_measures
   template ShapeError
   shape_error(const LevelSetField<3> &, const Function<3> &);
 
+  template class RayCaster<2>;
+  template class RayCaster<3>;
   template std::vector<double>
   exit_distances(const LevelSetField<2> &,
                  const Point<2> &,

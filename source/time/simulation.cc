@@ -169,6 +169,11 @@ namespace levelsinter
     archive &metrics_rows &field_output;
     if (Archive::is_loading::value)
       kept_metrics_rows = metrics_rows;
+    // resume() creates the analyses before loading.
+    if (packing_analysis)
+      archive &*packing_analysis;
+    if (particle_centres)
+      archive &*particle_centres;
   }
 
   template <int dim>
@@ -232,14 +237,17 @@ namespace levelsinter
   void
   Simulation<dim>::resume(const std::string &checkpoint_folder)
   {
-    if (scene.analysis.enabled(scene.geometry.shape,
-                               scene.geometry.particles.size()))
-      throw std::runtime_error(
-        "--resume: a checkpoint does not hold the packing analysis' state "
-        "(its pore tracking and shrinkage reference start at t = 0), and "
-        "this scene has it ('Analysis/Packing analysis', auto: on for two "
-        "or more particles). Runs to be resumed need 'Analysis/Packing "
-        "analysis = false'.");
+    // Their pore tracking and shrinkage and centre references are in the
+    // counters.
+    const auto &particles = scene.geometry.particles;
+    if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
+      {
+        packing_analysis = std::make_unique<PackingAnalysis<dim>>(scene, comm);
+        if (scene.geometry.shape == GeometryParameters::Shape::particles &&
+            particles.size() >= 2)
+          particle_centres = std::make_unique<ParticleCentres<dim>>(
+            particles, scene.domain, comm);
+      }
     // Triangulation::load() wants the coarse mesh of the run.
     make_box_mesh(tria, scene.domain);
     tria.load(checkpoint_folder + "/mesh");
@@ -452,14 +460,27 @@ namespace levelsinter
         if (curvature_driven)
           row.push_back(under_resolved_cells);
         const std::size_t columns_before_neck = row.size();
+        // Pores, density, all necks, coordination, shrinkage (doc/user_guide.md).
+        const auto         &particles = scene.geometry.particles;
+        std::vector<double> packing_row;
+        if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
+          {
+            TimerOutput::Scope scope(timer_output, "packing analysis");
+            if (!packing_analysis)
+              packing_analysis =
+                std::make_unique<PackingAnalysis<dim>>(scene, comm);
+            packing_row = packing_analysis->measure(step, t, alpha);
+          }
         // The neck of two particles; in a packing the smallest neck over
-        // the pairs that overlap at t = 0.
-        const auto &particles = scene.geometry.particles;
+        // the pairs that overlap at t = 0 (the packing analysis' necks if
+        // it ran: the same pairs).
         if (scene.geometry.shape == GeometryParameters::Shape::particles &&
             particles.size() >= 2)
           {
             const double neck =
-              neck_measures::smallest_neck_radius(alpha, particles);
+              packing_analysis ?
+                neck_measures::smallest_neck_radius(packing_analysis->necks()) :
+                neck_measures::smallest_neck_radius(alpha, particles);
             if (!std::isnan(neck))
               row.push_back(neck);
           }
@@ -467,27 +488,19 @@ namespace levelsinter
         for (const auto &mechanism : mechanisms)
           for (const double value : mechanism->metric_values())
             row.push_back(value);
-        // Pores, density, all necks, coordination, shrinkage (doc/user_guide.md).
-        if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
+        row.insert(row.end(), packing_row.begin(), packing_row.end());
+        // Densification: the approach of the particle centres.
+        if (packing_analysis &&
+            scene.geometry.shape == GeometryParameters::Shape::particles &&
+            particles.size() >= 2)
           {
             TimerOutput::Scope scope(timer_output, "packing analysis");
-            if (!packing_analysis)
-              packing_analysis =
-                std::make_unique<PackingAnalysis<dim>>(scene, comm);
-            for (const double value : packing_analysis->measure(step, t, alpha))
+            if (!particle_centres)
+              particle_centres = std::make_unique<ParticleCentres<dim>>(
+                particles, scene.domain, comm);
+            for (const double value :
+                 particle_centres->measure(alpha, packing_analysis->necks()))
               row.push_back(value);
-            // Densification: the approach of the particle centres.
-            if (scene.geometry.shape == GeometryParameters::Shape::particles &&
-                particles.size() >= 2)
-              {
-                if (!particle_centres)
-                  particle_centres = std::make_unique<ParticleCentres<dim>>(
-                    particles, scene.domain, comm);
-                const auto &necks = packing_analysis->necks();
-                for (const double value :
-                     particle_centres->measure(alpha, necks))
-                  row.push_back(value);
-              }
           }
         if (!metrics)
           {

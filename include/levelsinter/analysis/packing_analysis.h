@@ -8,8 +8,9 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/scene_parameters.h>
 
-#include <fstream>
+#include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,7 +22,7 @@ namespace levelsinter
    * every overlapping pair, the coordination number and the shrinkage
    * (doc/user_guide.md, "Packing metrics", names the columns). Writes
    * necks.csv, pores.csv and pore_events.csv in the output directory (none
-   * if the directory is empty).
+   * if the directory is empty), opened at the first measure().
    */
   template <int dim>
   class PackingAnalysis
@@ -57,6 +58,25 @@ namespace levelsinter
       return last_necks;
     }
 
+    /**
+     * The state a restart needs (boost archives; the checkpoint's
+     * counters): the pore tracking, the shrinkage reference (the spread at
+     * the first measure()) and the rows written to the CSV files, which a
+     * loaded analysis cuts back to these and continues.
+     */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      std::array<unsigned int, 3> rows = {
+        {necks_log ? necks_log->n_rows() : 0,
+         pores_log ? pores_log->n_rows() : 0,
+         events_log ? events_log->n_rows() : 0}};
+      archive &tracker &initial_spread &rows[0] &rows[1] &rows[2];
+      if (Archive::is_loading::value)
+        kept_rows = rows;
+    }
+
   private:
     // Solid volume in the window's cells and the solid's centroid in each
     // particle's power cell (the points nearer to it than to any other in
@@ -70,6 +90,11 @@ namespace levelsinter
     SolidMeasures
     measure_solid(const LevelSetField<dim> &level_set) const;
 
+    // necks.csv, pores.csv and pore_events.csv, new or continued after
+    // kept_rows.
+    void
+    open_logs();
+
     std::vector<std::vector<double>>    particles;
     std::vector<Point<dim>>             centres;
     std::vector<types::boundary_id>     symmetry_boundaries;
@@ -80,9 +105,11 @@ namespace levelsinter
     bool                                has_interior = false;
     MPI_Comm                            comm;
     PoreTracker<dim>                    tracker;
+    std::string                         directory;
     std::unique_ptr<MetricsLog>         necks_log;
     std::unique_ptr<MetricsLog>         pores_log;
-    std::ofstream                       events_log;
+    std::unique_ptr<MetricsLog>         events_log;
+    std::optional<std::array<unsigned int, 3>> kept_rows;
     std::vector<Pore<dim>>              last_pores;
     std::vector<neck_measures::PairNeck> last_necks;
   };

@@ -3,6 +3,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/point.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/domain_parameters.h>
@@ -59,6 +61,14 @@ namespace levelsinter
     std::vector<double>
     measure(const LevelSetField<dim>                   &level_set,
             const std::vector<neck_measures::PairNeck> &necks);
+
+    /** The reference centres (the first measure()) for a restart. */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &initial;
+    }
 
   private:
     // Particles whose power may be smallest somewhere in the ball of

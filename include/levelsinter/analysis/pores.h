@@ -6,6 +6,8 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 
+#include <boost/serialization/vector.hpp>
+
 #include <string>
 #include <vector>
 
@@ -29,6 +31,13 @@ namespace levelsinter
     /** Radius of the ball of the same volume. */
     double
     equivalent_radius() const;
+
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &volume &area &volume_in_window &centroid &open;
+    }
   };
 
   /**
@@ -84,11 +93,26 @@ namespace levelsinter
     std::vector<unsigned int>
     update(const std::vector<Pore<dim>> &pores, std::vector<Event> &events);
 
+    /** The closed pores of the last update() and the next id (restart). */
+    template <class Archive>
+    void
+    serialize(Archive &archive, const unsigned int)
+    {
+      archive &previous &next_id;
+    }
+
   private:
     struct Tracked
     {
       unsigned int id;
       Pore<dim>    pore;
+
+      template <class Archive>
+      void
+      serialize(Archive &archive, const unsigned int)
+      {
+        archive &id &pore;
+      }
     };
     std::vector<Tracked> previous;
     unsigned int         next_id = 1;

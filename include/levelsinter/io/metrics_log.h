@@ -30,6 +30,14 @@ namespace levelsinter
     void
     add_row(const std::vector<double> &values);
 
+    /** A row whose cells are text (a column that is not a number). */
+    void
+    add_text_row(const std::vector<std::string> &cells);
+
+    /** A number as add_row() writes it (12 significant digits). */
+    static std::string
+    format(const double value);
+
     const std::vector<std::string> &
     columns() const
     {

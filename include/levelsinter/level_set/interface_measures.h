@@ -10,6 +10,8 @@
 
 #include <deal.II/non_matching/fe_immersed_values.h>
 
+#include <deal.II/numerics/rtree.h>
+
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
 
@@ -101,10 +103,47 @@ namespace levelsinter
     shape_error(const LevelSetField<dim> &level_set,
                 const Function<dim>      &exact_signed_distance);
 
+    /** A ray: an origin and a unit direction. */
+    template <int dim>
+    struct Ray
+    {
+      Point<dim>     origin;
+      Tensor<1, dim> direction;
+    };
+
     /**
-     * Distance from @p origin along each unit direction to the first point
-     * where the ray leaves the solid; 0 if the origin lies in the pore,
-     * +infinity if the ray leaves the domain without meeting the interface.
+     * Casts rays on the discrete level set. A tree of the locally owned
+     * cells' bounding boxes, built once, gives the cells a ray crosses;
+     * they are walked from the origin and the walk stops at the first
+     * crossing of the interface, so that a ray costs a few cells, not a
+     * pass over the mesh. Keep it while the mesh and alpha stay as they
+     * are.
+     */
+    template <int dim>
+    class RayCaster
+    {
+    public:
+      explicit RayCaster(const LevelSetField<dim> &level_set);
+
+      /**
+       * Per ray, the distance from its origin to the first point where it
+       * leaves the solid; 0 if the origin lies in the pore, +infinity if
+       * the ray leaves the domain without meeting the interface. One
+       * reduction over the ranks for all the rays (collective).
+       */
+      std::vector<double>
+      exit_distances(const std::vector<Ray<dim>> &rays) const;
+
+    private:
+      using Cell = typename DoFHandler<dim>::active_cell_iterator;
+      const LevelSetField<dim> &level_set;
+      RTree<std::pair<BoundingBox<dim>, Cell>> tree;
+      BoundingBox<dim>                         extent; // of the local cells
+    };
+
+    /**
+     * RayCaster::exit_distances() of the rays from @p origin along each
+     * unit direction.
      */
     template <int dim>
     std::vector<double>

@@ -1,0 +1,70 @@
+# --- Cost of the surface-diffusion packings (issue 16; doc/performance.md)
+# performance_study runs a scene a few steps and writes its cost per step
+# and per phase (wall and CPU, TimerOutput) as one CSV row; the packings of
+# 8, 27, 64 and 154 particles share the paper's radii (uniform in
+# [0.0633, 0.0797] um), the generator's settings and the resolution of
+# packing_154_surface_diffusion_3d.prm (h_min = 0.3 / 2^5 = 0.0094 um,
+# R/h = 6.7-8.5): only the particle count and the box differ (the box
+# scales with N^(1/3), in whole coarse cells of 0.3 um). 3 steps each: the
+# cost per step is taken over steps 2-3 (one adaptation, one metrics
+# call). Long runs on a shared machine: label benchmark.
+add_executable(performance_study performance_study.cc)
+target_link_libraries(performance_study levelsinter_study)
+deal_ii_setup_target(performance_study)
+set(PERF_SCENE
+  ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_surface_diffusion_3d.prm)
+set(PERF_STEPS 3)
+set(PERF_CSVS)
+set(PERF_FIXTURES)
+# performance_run(N SIDE CELLS RANKS): N particles in [0, SIDE]^3 (CELLS
+# coarse cells per axis) on RANKS ranks.
+function(performance_run n side cells ranks)
+  set(name performance_sd_${n}_np${ranks})
+  if(n EQUAL 154)
+    set(particles ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_3d.csv)
+    set(setup "")
+  else()
+    set(particles ${CMAKE_CURRENT_BINARY_DIR}/performance_packing_${n}.csv)
+    set(setup performance_pack_${n})
+  endif()
+  add_test(NAME ${name} COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${ranks}
+    $<TARGET_FILE:performance_study> ${PERF_SCENE} ${PERF_STEPS}
+    --csv ${CMAKE_CURRENT_BINARY_DIR}/${name}.csv
+    --set "Domain/Upper corner=${side},${side},${side}"
+    --set "Domain/Subdivisions=${cells},${cells},${cells}"
+    --set "Geometry/Particle file=${particles}"
+    --set "Output/Directory=${CMAKE_CURRENT_BINARY_DIR}/${name}"
+    --set "Output/Field formats=none" --set "Output/Progress interval=1")
+  set_tests_properties(${name} PROPERTIES LABELS benchmark
+    FIXTURES_SETUP ${name} FIXTURES_REQUIRED "${setup}")
+  set(PERF_CSVS ${PERF_CSVS} ${CMAKE_CURRENT_BINARY_DIR}/${name}.csv
+    PARENT_SCOPE)
+  set(PERF_FIXTURES ${PERF_FIXTURES} ${name} PARENT_SCOPE)
+endfunction()
+# The smaller packings, made as packing_154_3d.csv was (its '#' lines) in
+# a box scaled by (N / 154)^(1/3) and rounded up to whole 0.3 um cells.
+foreach(spec 8:0.6:2 27:0.9:3 64:0.9:3)
+  string(REPLACE ":" ";" spec ${spec})
+  list(GET spec 0 n)
+  list(GET spec 1 side)
+  list(GET spec 2 cells)
+  add_test(NAME performance_pack_${n} COMMAND $<TARGET_FILE:levelsinter-pack>
+    --particles ${n} --radius-distribution uniform --radius-min 0.0633
+    --radius-max 0.0797 --region 0,0,0:${side},${side},${side}
+    --domain 0,0,0:${side},${side},${side} --seed 1
+    --output ${CMAKE_CURRENT_BINARY_DIR}/performance_packing_${n}.csv)
+  set_tests_properties(performance_pack_${n} PROPERTIES LABELS benchmark
+    FIXTURES_SETUP performance_pack_${n})
+  performance_run(${n} ${side} ${cells} 2)
+endforeach()
+performance_run(154 1.2 4 2)
+# Strong scaling 1 -> 2 ranks on the 8 particles.
+performance_run(8 0.6 2 1)
+# Run as its #! says: Debian's python3 has matplotlib.
+add_test(NAME performance_table COMMAND
+  ${CMAKE_SOURCE_DIR}/scripts/plot_performance.py
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/performance_packings.csv
+  --png ${CMAKE_SOURCE_DIR}/doc/validation_data/performance_packings.png
+  ${PERF_CSVS})
+set_tests_properties(performance_table PROPERTIES LABELS benchmark
+  FIXTURES_REQUIRED "${PERF_FIXTURES}")
