@@ -1,12 +1,14 @@
 #!/usr/bin/python3
 """Neck growth x/R against reduced time t* in log-log scales.
 
-usage: plot_neck_growth.py OUT.png [--law A,n ...] LABEL=FILE.csv [...]
+usage: plot_neck_growth.py OUT.png [--law A,n ...] [--xlabel TEXT]
+                           LABEL=FILE.csv [...]
 
 Each CSV is written by `surface_diffusion_validation neck ... --csv`
 (columns t_star, neck_over_R; R is the equivalent radius 2 R1 R2/(R1+R2)).
 --law A,n adds the power law x/R = A t*^(1/n) as a dashed line, e.g. the
-paper's fit 1.3,7 (Fig. 26).
+paper's fit 1.3,7 (Fig. 26). --xlabel names the reduced time when it is
+not C_s t / R^4 (the driver uses C_v gamma t / R^3 with volume diffusion).
 """
 import csv
 import sys
@@ -21,6 +23,11 @@ laws = []
 while "--law" in args:
     i = args.index("--law")
     laws.append([float(v) for v in args[i + 1].split(",")])
+    del args[i : i + 2]
+xlabel = "t* = C_s t / R^4"
+if "--xlabel" in args:
+    i = args.index("--xlabel")
+    xlabel = args[i + 1]
     del args[i : i + 2]
 if len(args) < 2:
     sys.exit(__doc__)
@@ -37,7 +44,7 @@ for a, n in laws:
     t = [min(t_all), max(t_all)]
     ax.loglog(t, [a * v ** (1 / n) for v in t], "k--", lw=1,
               label=f"x/R = {a:g} t*^(1/{n:g})")
-ax.set_xlabel("t* = C_s t / R^4")
+ax.set_xlabel(xlabel)
 ax.set_ylabel("x / R")
 ax.grid(True, which="both", alpha=0.3)
 ax.legend(fontsize=8)

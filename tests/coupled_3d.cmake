@@ -22,7 +22,10 @@ add_test(NAME coupled_two_spheres_3d COMMAND ${SD_VALIDATE} neck
   --csv coupled_two_spheres_ci_3d.csv --min-neck-growth 1.04
   --max-volume-change 3e-4)
 
-# 1 and 2 ranks, the same 3 steps through the application.
+# 1 and 2 ranks, the same 3 steps through the application. Measured:
+# every column but the times and the iteration counts (the ILU of the xi
+# extension is per rank: 27 against 42-43 GMRES iterations) agrees to
+# 2.8e-7 (max_velocity; the neck to 3e-9). Checked at 2e-5.
 foreach(np 1 2)
   add_test(NAME coupled_two_spheres_3d_np${np}
     COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
@@ -36,8 +39,7 @@ endforeach()
 add_test(NAME coupled_two_spheres_3d_1_vs_2_ranks
   COMMAND compare_metrics coupled_3d_np1/metrics.csv
     coupled_3d_np2/metrics.csv 2e-5
-    wall_time transport_iterations cells dofs volume_change max_velocity
-    volume_correction_speed surface_diffusion_iterations
+    wall_time transport_iterations surface_diffusion_iterations
     surface_diffusion_solve_cpu_time
     volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)
 set_tests_properties(coupled_two_spheres_3d_1_vs_2_ranks PROPERTIES
@@ -50,3 +52,27 @@ add_test(NAME study_coupled_two_spheres_3d COMMAND ${SD_VALIDATE} neck
   --set "Output/Metrics interval=1" --csv coupled_two_spheres_3d.csv)
 set_tests_properties(study_coupled_two_spheres_3d PROPERTIES
   LABELS validation-long)
+
+# The 27-particle coupled packing runs: 2 steps at h = 0.05 on 2 ranks,
+# lambda = 1 cell (at this h the ramp 0.8 E = 0.128 holds no deeper
+# source; a smoke test of the wiring, not of the physics), without the
+# packing analysis (pores over the whole box: half the cost of a step).
+set(COUPLED_PACKING_27_COARSE
+  --set "Mesh refinement/Maximum level=2"
+  --set "Volume diffusion/Interior offset=1")
+add_test(NAME coupled_packing_27_3d_np2
+  COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 $<TARGET_FILE:levelsinter>
+    --overwrite --set "Time/Maximum steps=2" --set "Output/Field formats=none"
+    --set "Analysis/Packing analysis=false"
+    --set "Output/Directory=coupled_packing_27" ${COUPLED_PACKING_27_COARSE}
+    ${COUPLED_PACKING_27})
+set_tests_properties(coupled_packing_27_3d_np2 PROPERTIES
+  PASS_REGULAR_EXPRESSION "done: 2 steps")
+# Its cost per step and phase (CPU of each timer section): the same 2
+# steps through the neck driver, which prints the sections.
+add_test(NAME benchmark_coupled_packing_27_3d
+  COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 ${SD_VALIDATE} neck
+    ${COUPLED_PACKING_27} 2 --sample-interval 2 ${COUPLED_PACKING_27_COARSE}
+    --csv coupled_packing_27_3d.csv)
+set_tests_properties(benchmark_coupled_packing_27_3d PROPERTIES
+  LABELS benchmark)
