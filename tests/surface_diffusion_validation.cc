@@ -37,7 +37,10 @@
 // --max-centre-shift (|d - d0| / d0), --max-length-change (|L - L0| /
 // L0), --max-neck-offset (two grains:
 // distance of the initial neck from the plane where the spheres meet,
-// relative to Rbar).
+// relative to Rbar). A grain whose centre lies outside the domain is the
+// mirror image of the other across a symmetry plane (an octant scene):
+// the neck is then on that plane, and the centre and length measures use
+// the grain inside (rays that leave the domain are skipped).
 //
 // Both modes take --csv FILE and --set "Section/Entry=value" (scene
 // overrides for every run). Exit code 0 only if every check passes.
@@ -370,6 +373,14 @@ namespace
       for (unsigned int d = 0; d < dim; ++d)
         centres[i][d] = particles[i][d];
     const bool   pair = particles.size() == 2;
+    std::vector<bool> inside(particles.size(), true);
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      for (unsigned int d = 0; d < dim; ++d)
+        inside[i] = inside[i] && centres[i][d] >= scene.domain.lower_corner[d] &&
+                    centres[i][d] <= scene.domain.upper_corner[d];
+    const bool mirrored_pair = pair && !(inside[0] && inside[1]);
+    const unsigned int n_inside =
+      std::count(inside.begin(), inside.end(), true);
     const double r1 = particles[0][dim], r2 = particles[1][dim];
     // Two grains: Rbar = 2 R1 R2 / (R1 + R2) (paper Fig. 27); a packing:
     // the mean radius.
@@ -394,7 +405,7 @@ namespace
           }
     std::vector<std::vector<Tensor<1, dim>>> directions(particles.size());
     for (unsigned int i = 0; i < particles.size(); ++i)
-      if (!neighbours[i].empty())
+      if (!neighbours[i].empty() && inside[i])
         directions[i] = shift_directions(centres[i], neighbours[i]);
     // t* = C_s t / Rbar^4 (volume diffusion, alone or with surface
     // diffusion: C_v gamma t / Rbar^3), whatever time unit the scene runs
@@ -422,6 +433,11 @@ namespace
                       const LevelSetField<dim> &alpha) {
       last_sample = step;
       const auto neck =
+        mirrored_pair ?
+          neck_measures::Neck{neck_measures::neck_radius(alpha,
+                                                         centres[0],
+                                                         centres[1]),
+                              0.5} :
         pair ? neck_measures::narrowest_neck(alpha, centres[0],
                                                   centres[1]) :
                neck_measures::Neck{
@@ -449,10 +465,19 @@ namespace
           {
             const auto exits = interface_measures::exit_distances(
               alpha, centres[i], directions[i]);
-            double across = 0;
+            // Rays that leave the domain first (symmetry planes) are
+            // skipped: the mirror image of their exit is one kept.
+            double       across   = 0;
+            unsigned int n_across = 0;
             for (unsigned int e = 1; e < exits.size(); ++e)
-              across += exits[e] / (exits.size() - 1);
-            shift += (across - exits[0]) * (pair ? 1. : 2. / particles.size());
+              if (std::isfinite(exits[e]))
+                {
+                  across += exits[e];
+                  ++n_across;
+                }
+            across /= std::max(n_across, 1u);
+            shift += (across - exits[0]) *
+                     (pair ? 2. / n_inside : 2. / particles.size());
             far_end += exits[0];
             ++n_free;
           }
