@@ -125,8 +125,8 @@ add_test(NAME packing_neck_periodic COMMAND ${PACK_TEST} neck:1e-5
 
 # The 27-particle scene runs with the current levelsinter (surface
 # diffusion): 2 steps at h_min = 0.05 (15453 DoFs) on 2 ranks; measured
-# 170 s wall at load 14 (3 steps with the metrics every step: 61 s CPU,
-# 298 s wall).
+# 18 s wall with the R-tree neck search (170 s before it, at a similar
+# load of 14-25).
 add_test(NAME packing_scene_27_3d_np2
   COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 $<TARGET_FILE:levelsinter>
     --set "Mesh refinement/Maximum level=2" --set "Time/Maximum steps=2"
