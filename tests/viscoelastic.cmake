@@ -96,3 +96,22 @@ add_test(NAME viscoelastic_newtonian_limit_agrees_2d COMMAND compare_metrics
   max_velocity conformation_iterations max_trace_c)
 set_tests_properties(viscoelastic_newtonian_limit_agrees_2d PROPERTIES
   FIXTURES_REQUIRED "ve_newtonian;ve_limit")
+
+# The seed's geometry at De = 1 (parameter_files/viscoelastic_cylinders_2d
+# .prm), the first 5 steps: it runs, the neck grows (measured 0.400 ->
+# 0.454 by t = 6.2e-4: the fast initial response over beta lambda = 0.01)
+# and the polymer is stretched (max tr c 3 -> 4.34; 17.4 after 14 steps).
+add_test(NAME viscoelastic_cylinders_2d
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Time/Maximum steps=5" --set "Output/Field formats=none"
+    --set "Output/Metrics interval=1" --set "Output/Directory=ve_cylinders"
+    ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
+set_tests_properties(viscoelastic_cylinders_2d PROPERTIES
+  PASS_REGULAR_EXPRESSION "done: 5 steps")
+# A viscoelastic law without the viscous flow it belongs to.
+bad_input_test(viscoelastic_without_viscous_flow "Phase law/Law"
+  --set "Viscous flow/Enabled=false"
+  ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
+bad_input_test(viscoelastic_zero_relaxation_time "Phase law/Relaxation time"
+  --set "Phase law/Relaxation time=0"
+  ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)

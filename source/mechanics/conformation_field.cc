@@ -20,6 +20,84 @@
 
 namespace levelsinter
 {
+  namespace
+  {
+    /**
+     * What both assemblies of the transport read on a cell: shape values,
+     * the velocity (and its gradient) with the SUPG parameter at the
+     * quadrature points, and on boundary faces the inflow weight
+     * -min(0, v . n) at the face points.
+     */
+    template <int dim>
+    struct TransportScratch
+    {
+      TransportScratch(const FiniteElement<dim> &fe,
+                       const VelocityField<dim> &velocity)
+        : velocity(velocity)
+        , quadrature(2)
+        , face_quadrature(2)
+        , values(fe,
+                 quadrature,
+                 update_values | update_gradients | update_JxW_values)
+        , velocity_values(velocity.fe(),
+                          quadrature,
+                          update_values | update_gradients)
+        , face_values(fe,
+                      face_quadrature,
+                      update_values | update_normal_vectors |
+                        update_JxW_values)
+        , velocity_face_values(velocity.fe(), face_quadrature, update_values)
+        , v(quadrature.size())
+        , grad_v(quadrature.size())
+        , tau(quadrature.size())
+        , v_face(face_quadrature.size())
+        , inflow(face_quadrature.size())
+      {}
+
+      template <typename CellIterator>
+      void
+      reinit(const CellIterator &cell, const double dt)
+      {
+        velocity_cell = same_cell(cell, velocity.dof_handler());
+        values.reinit(cell);
+        velocity_values.reinit(velocity_cell);
+        velocity_values[FEValuesExtractors::Vector(0)].get_function_values(
+          velocity.values(), v);
+        velocity_values[FEValuesExtractors::Vector(0)]
+          .get_function_gradients(velocity.values(), grad_v);
+        const double h = cell->diameter() / std::sqrt(double(dim));
+        for (unsigned int q = 0; q < quadrature.size(); ++q)
+          tau[q] =
+            1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
+      }
+
+      template <typename CellIterator>
+      void
+      reinit_face(const CellIterator &cell, const unsigned int f)
+      {
+        face_values.reinit(cell, f);
+        velocity_face_values.reinit(velocity_cell, f);
+        velocity_face_values[FEValuesExtractors::Vector(0)]
+          .get_function_values(velocity.values(), v_face);
+        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+          inflow[q] = -std::min(0., v_face[q] * face_values.normal_vector(q));
+      }
+
+      const VelocityField<dim>                       &velocity;
+      const QGauss<dim>                               quadrature;
+      const QGauss<dim - 1>                           face_quadrature;
+      FEValues<dim>                                   values, velocity_values;
+      FEFaceValues<dim>                               face_values,
+        velocity_face_values;
+      typename DoFHandler<dim>::active_cell_iterator velocity_cell;
+      std::vector<Tensor<1, dim>>                     v;
+      std::vector<Tensor<2, dim>>                     grad_v;
+      std::vector<double>                             tau;
+      std::vector<Tensor<1, dim>>                     v_face;
+      std::vector<double>                             inflow;
+    };
+  } // namespace
+
   template <int dim>
   ConformationField<dim>::ConformationField(const DoFHandler<dim>   &dofs,
                                             const ConformationModel &model)
@@ -152,46 +230,26 @@ namespace levelsinter
                                           const double              dt)
   {
     matrix = 0;
-    const QGauss<dim>     quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    FEValues<dim>         values(fe,
-                         quadrature,
-                         update_values | update_gradients |
-                           update_JxW_values);
-    FEValues<dim>     velocity_values(velocity.fe(), quadrature, update_values);
-    FEFaceValues<dim> face_values(fe,
-                                  face_quadrature,
-                                  update_values | update_normal_vectors |
-                                    update_JxW_values);
-    FEFaceValues<dim> velocity_face_values(velocity.fe(),
-                                           face_quadrature,
-                                           update_values);
-    const FEValuesExtractors::Vector     velocities(0);
-    const unsigned int                   n = fe.n_dofs_per_cell();
+    TransportScratch<dim>                scratch(fe, velocity);
+    const FEValues<dim>                 &values = scratch.values;
+    const FEFaceValues<dim>             &face   = scratch.face_values;
+    const unsigned int                   n      = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(n, n);
     std::vector<types::global_dof_index> indices(n);
-    std::vector<Tensor<1, dim>>          v(quadrature.size());
-    std::vector<Tensor<1, dim>>          v_face(face_quadrature.size());
     std::vector<double>                  test(n), advective(n);
 
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto velocity_cell = same_cell(cell, velocity.dof_handler());
-          values.reinit(cell);
-          velocity_values.reinit(velocity_cell);
-          velocity_values[velocities].get_function_values(velocity.values(),
-                                                          v);
-          const double h = cell->diameter() / std::sqrt(double(dim));
-          cell_matrix    = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          scratch.reinit(cell, dt);
+          cell_matrix = 0;
+          for (unsigned int q = 0; q < values.n_quadrature_points; ++q)
             {
-              const double tau =
-                1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  advective[i] = v[q] * values.shape_grad(i, q);
-                  test[i]      = values.shape_value(i, q) + tau * advective[i];
+                  advective[i] = scratch.v[q] * values.shape_grad(i, q);
+                  test[i] =
+                    values.shape_value(i, q) + scratch.tau[q] * advective[i];
                 }
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
@@ -204,22 +262,14 @@ namespace levelsinter
           for (const unsigned int f : cell->face_indices())
             if (cell->at_boundary(f))
               {
-                face_values.reinit(cell, f);
-                velocity_face_values.reinit(velocity_cell, f);
-                velocity_face_values[velocities].get_function_values(
-                  velocity.values(), v_face);
-                for (const unsigned int q :
-                     face_values.quadrature_point_indices())
-                  {
-                    const double inflow =
-                      -std::min(0., v_face[q] * face_values.normal_vector(q));
-                    for (unsigned int i = 0; i < n; ++i)
-                      for (unsigned int j = 0; j < n; ++j)
-                        cell_matrix(i, j) += 0.5 * inflow *
-                                             face_values.shape_value(i, q) *
-                                             face_values.shape_value(j, q) *
-                                             face_values.JxW(q);
-                  }
+                scratch.reinit_face(cell, f);
+                for (const unsigned int q : face.quadrature_point_indices())
+                  for (unsigned int i = 0; i < n; ++i)
+                    for (unsigned int j = 0; j < n; ++j)
+                      cell_matrix(i, j) += 0.5 * scratch.inflow[q] *
+                                           face.shape_value(i, q) *
+                                           face.shape_value(j, q) *
+                                           face.JxW(q);
               }
           cell->get_dof_indices(indices);
           constraints.distribute_local_to_global(cell_matrix, indices, matrix);
@@ -237,33 +287,17 @@ namespace levelsinter
                                        const bool average) const
   {
     const auto             list = components();
-    const unsigned int     m    = list.size();
-    const QGauss<dim>      quadrature(2);
-    const QGauss<dim - 1>  face_quadrature(2);
-    FEValues<dim>          values(fe,
-                         quadrature,
-                         update_values | update_gradients |
-                           update_JxW_values);
-    FEValues<dim>          velocity_values(velocity.fe(),
-                                  quadrature,
-                                  update_values | update_gradients);
-    FEFaceValues<dim>      face_values(fe,
-                                  face_quadrature,
-                                  update_values | update_normal_vectors |
-                                    update_JxW_values);
-    FEFaceValues<dim>      velocity_face_values(velocity.fe(),
-                                           face_quadrature,
-                                           update_values);
-    const FEValuesExtractors::Vector velocities(0);
-    const unsigned int               n = fe.n_dofs_per_cell();
-    const unsigned int               n_q = quadrature.size();
-    std::vector<dealii::Vector<double>> cell_rhs(m, dealii::Vector<double>(n));
+    const unsigned int                   m = list.size();
+    TransportScratch<dim>                scratch(fe, velocity);
+    const FEValues<dim>                 &values = scratch.values;
+    const FEFaceValues<dim>             &face   = scratch.face_values;
+    const unsigned int                   n      = fe.n_dofs_per_cell();
+    const unsigned int                   n_q    = values.n_quadrature_points;
+    std::vector<dealii::Vector<double>>  cell_rhs(m, dealii::Vector<double>(n));
     std::vector<types::global_dof_index> indices(n);
-    std::vector<Tensor<1, dim>>          v(n_q), v_face(face_quadrature.size());
-    std::vector<Tensor<2, dim>>          grad_v(n_q);
     std::vector<std::vector<double>>     s_old(m, std::vector<double>(n_q)),
       s_stage(m, std::vector<double>(n_q)),
-      s_face(m, std::vector<double>(face_quadrature.size()));
+      s_face(m, std::vector<double>(face.n_quadrature_points));
     std::vector<std::vector<Tensor<1, dim>>> grad_s_old(
       m, std::vector<Tensor<1, dim>>(n_q));
 
@@ -282,13 +316,7 @@ namespace levelsinter
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto velocity_cell = same_cell(cell, velocity.dof_handler());
-          values.reinit(cell);
-          velocity_values.reinit(velocity_cell);
-          velocity_values[velocities].get_function_values(velocity.values(),
-                                                          v);
-          velocity_values[velocities].get_function_gradients(
-            velocity.values(), grad_v);
+          scratch.reinit(cell, dt);
           for (unsigned int k = 0; k < m; ++k)
             {
               values.get_function_values(old[k], s_old[k]);
@@ -296,26 +324,25 @@ namespace levelsinter
               values.get_function_values(stage[k], s_stage[k]);
               cell_rhs[k] = 0;
             }
-          const double h = cell->diameter() / std::sqrt(double(dim));
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              const Tensor<2, 3> l = embed_velocity_gradient<dim>(grad_v[q]);
+              const Tensor<1, dim> &v = scratch.v[q];
+              const Tensor<2, 3>    l =
+                embed_velocity_gradient<dim>(scratch.grad_v[q]);
               SymmetricTensor<2, 3> source =
                 model.log_deformation_rate(log_tensor(s_stage, q), l);
               if (average)
                 source = 0.5 * (source + model.log_deformation_rate(
                                            log_tensor(s_old, q), l));
-              const double tau =
-                1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));
               for (unsigned int k = 0; k < m; ++k)
                 {
                   const double old_part =
-                    s_old[k][q] / dt - 0.5 * (v[q] * grad_s_old[k][q]) +
+                    s_old[k][q] / dt - 0.5 * (v * grad_s_old[k][q]) +
                     source[list[k].first][list[k].second];
                   for (unsigned int i = 0; i < n; ++i)
                     cell_rhs[k](i) +=
                       (values.shape_value(i, q) +
-                       tau * (v[q] * values.shape_grad(i, q))) *
+                       scratch.tau[q] * (v * values.shape_grad(i, q))) *
                       old_part * values.JxW(q);
                 }
             }
@@ -323,23 +350,15 @@ namespace levelsinter
           for (const unsigned int f : cell->face_indices())
             if (cell->at_boundary(f))
               {
-                face_values.reinit(cell, f);
-                velocity_face_values.reinit(velocity_cell, f);
-                velocity_face_values[velocities].get_function_values(
-                  velocity.values(), v_face);
+                scratch.reinit_face(cell, f);
                 for (unsigned int k = 0; k < m; ++k)
-                  face_values.get_function_values(old[k], s_face[k]);
-                for (const unsigned int q :
-                     face_values.quadrature_point_indices())
-                  {
-                    const double inflow =
-                      -std::min(0., v_face[q] * face_values.normal_vector(q));
-                    for (unsigned int k = 0; k < m; ++k)
-                      for (unsigned int i = 0; i < n; ++i)
-                        cell_rhs[k](i) -= 0.5 * inflow * s_face[k][q] *
-                                          face_values.shape_value(i, q) *
-                                          face_values.JxW(q);
-                  }
+                  face.get_function_values(old[k], s_face[k]);
+                for (const unsigned int q : face.quadrature_point_indices())
+                  for (unsigned int k = 0; k < m; ++k)
+                    for (unsigned int i = 0; i < n; ++i)
+                      cell_rhs[k](i) -= 0.5 * scratch.inflow[q] *
+                                        s_face[k][q] * face.shape_value(i, q) *
+                                        face.JxW(q);
               }
           cell->get_dof_indices(indices);
           for (unsigned int k = 0; k < m; ++k)
