@@ -61,8 +61,12 @@ add_test(NAME shapes_hollow_cylinder_2d COMMAND ${SHAPES} hollow ${HOLLOW} 5
 # 0.15 to 0.053).
 add_test(NAME study_shapes_hollow_cylinder_2d COMMAND ${SHAPES} hollow
   ${HOLLOW} 5,6,7 --set "Time/End time=0.15" --csv study_hollow_cylinder.csv)
-set_tests_properties(study_shapes_hollow_cylinder_2d PROPERTIES
-  LABELS validation-long)
+# The same with the volume correction (Eq. 116).
+add_test(NAME study_shapes_hollow_cylinder_vc_2d COMMAND ${SHAPES} hollow
+  ${HOLLOW} 5,6,7 --set "Time/End time=0.15"
+  --set "Volume correction/Enabled=true" --csv study_hollow_cylinder_vc.csv)
+set_tests_properties(study_shapes_hollow_cylinder_2d
+  study_shapes_hollow_cylinder_vc_2d PROPERTIES LABELS validation-long)
 
 # The squarish particle (superellipse p = 4, a = 0.25) relaxing to a
 # circle, level 5 (a/h = 32) to t = 0.3 with the volume correction: the

@@ -28,12 +28,12 @@ deal_ii_setup_target(conformation_field)
 # The conformation field in a solid-body rotation (closed form in the
 # driver's header): transport, upper-convected rotation and relaxation.
 # Measured (max nodal error of c / amplitude, a quarter turn, Courant 0.5):
-#   2D h = 1/8, 1/16, 1/32, 1/64: 0.227, 0.0338, 0.00379, 0.000669
-#   (orders 2.75, 3.15, 2.50); 3D h = 1/4, 1/8, 1/16: 0.363, 0.231,
-#   0.0337 (the 3D error equals the 2D one at the same h: the field does
+#   2D h = 1/8, 1/16, 1/32, 1/64: 0.219, 0.0309, 0.00308, 0.000460
+#   (orders 2.82, 3.33, 2.74); 3D h = 1/4, 1/8, 1/16: 0.352, 0.219,
+#   0.0309 (the 3D error equals the 2D one at the same h: the field does
 #   not vary along the axis of rotation beyond the bump); GMRES <= 6 (ILU).
 # CI limits about 1.5 x the measured error and orders 0.6 below (3D: 0.25
-# below the pre-asymptotic 0.65 between the two coarsest meshes).
+# below the pre-asymptotic 0.68 between the two coarsest meshes).
 add_test(NAME conformation_rotation_2d
   COMMAND conformation_field 2 5,6 --max-error 5.7e-3 --min-order 2.5)
 add_test(NAME conformation_rotation_3d
