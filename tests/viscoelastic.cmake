@@ -115,3 +115,20 @@ bad_input_test(viscoelastic_without_viscous_flow "Phase law/Law"
 bad_input_test(viscoelastic_zero_relaxation_time "Phase law/Relaxation time"
   --set "Phase law/Relaxation time=0"
   ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
+
+# The De sweep behind doc/validation.md ("Viscoelastic particles in viscous
+# flow"): the scene to t = 0.1 as a Newtonian melt of viscosity 1 and at
+# De = 0.1 and 1 (metrics.csv in the build's tests/ve_sweep_*).
+function(add_viscoelastic_sweep_run name)
+  add_test(NAME study_viscoelastic_cylinders_${name}_2d
+    COMMAND $<TARGET_FILE:levelsinter> --overwrite --set "Time/End time=0.1"
+      --set "Output/Field formats=none" --set "Output/Metrics interval=1"
+      --set "Output/Directory=ve_sweep_${name}" ${ARGN}
+      ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
+  set_tests_properties(study_viscoelastic_cylinders_${name}_2d PROPERTIES
+    LABELS validation-long PASS_REGULAR_EXPRESSION "done:")
+endfunction()
+add_viscoelastic_sweep_run(newtonian --set "Phase law/Law=newtonian"
+  --set "Viscous flow/Solid viscosity=1")
+add_viscoelastic_sweep_run(de0.1 --set "Phase law/Relaxation time=0.1")
+add_viscoelastic_sweep_run(de1)
