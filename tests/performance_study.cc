@@ -172,6 +172,7 @@ namespace
       }
     study::Table table(columns, options.csv);
     table.add(row);
+    simulation.timer().print_summary();
   }
 } // namespace
 
