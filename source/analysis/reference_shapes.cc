@@ -16,6 +16,7 @@ namespace levelsinter
   {
     if (centres.size() != radii.size() || centres.empty())
       throw std::invalid_argument("UnionOfBalls needs one radius per centre");
+    find_neighbours();
   }
 
   template <int dim>
@@ -32,60 +33,91 @@ namespace levelsinter
         ball_centres.push_back(c);
         ball_radii.push_back(row[dim]);
       }
+    if (ball_centres.empty())
+      throw std::invalid_argument("UnionOfBalls needs at least one ball");
+    find_neighbours();
+  }
+
+  template <int dim>
+  void
+  UnionOfBalls<dim>::find_neighbours()
+  {
+    const unsigned int n = ball_centres.size();
+    neighbours.assign(n, {});
+    largest_radius = *std::max_element(ball_radii.begin(), ball_radii.end());
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        if (ball_centres[i].distance(ball_centres[j]) <
+            ball_radii[i] + ball_radii[j])
+          {
+            neighbours[i].push_back(j);
+            neighbours[j].push_back(i);
+          }
   }
 
   template <int dim>
   double
   UnionOfBalls<dim>::value(const Point<dim> &p, const unsigned int) const
   {
-    double d = std::numeric_limits<double>::max();
+    std::vector<double> gaps(ball_centres.size());
     for (unsigned int i = 0; i < ball_centres.size(); ++i)
-      d = std::min(d, p.distance(ball_centres[i]) - ball_radii[i]);
+      gaps[i] = p.distance(ball_centres[i]) - ball_radii[i];
+    const double d = *std::min_element(gaps.begin(), gaps.end());
     if (d >= 0)
       return d;
-    return -depth_inside(p);
+    return -depth_inside(p, gaps);
   }
 
   template <int dim>
   double
-  UnionOfBalls<dim>::depth_inside(const Point<dim> &p) const
+  UnionOfBalls<dim>::depth_inside(const Point<dim>          &p,
+                                  const std::vector<double> &gaps) const
   {
     // Distance to the union's boundary from inside: for each sphere the
     // nearest point is the radial projection if no other ball covers it,
     // else on the junction ring (circle in 3D, two points in 2D) with an
     // overlapping ball. Third balls covering a junction are ignored.
-    const unsigned int n     = ball_centres.size();
-    double             depth = std::numeric_limits<double>::max();
-    auto covered = [&](const Point<dim> &q, const unsigned int skip) {
-      for (unsigned int k = 0; k < n; ++k)
-        if (k != skip && q.distance(ball_centres[k]) < ball_radii[k] * (1 - 1e-12))
+    // A boundary point at distance <= bound lies on a sphere with
+    // gap <= bound, so only those spheres are searched; the bound grows
+    // until the nearest point found is within it (then it is the nearest of
+    // all). Costs O(neighbours) per sphere instead of O(n^2).
+    auto covered = [&](const Point<dim> &q, const unsigned int i) {
+      for (const unsigned int k : neighbours[i])
+        if (q.distance(ball_centres[k]) < ball_radii[k] * (1 - 1e-12))
           return true;
       return false;
     };
-    for (unsigned int i = 0; i < n; ++i)
+    for (double bound = largest_radius;; bound *= 2)
       {
-        const Tensor<1, dim> x = p - ball_centres[i];
-        const double         r = x.norm();
-        if (r > 0 && !covered(ball_centres[i] + ball_radii[i] / r * x, i))
-          depth = std::min(depth, std::abs(ball_radii[i] - r));
-        for (unsigned int j = 0; j < n; ++j)
+        double depth = std::numeric_limits<double>::max();
+        for (unsigned int i = 0; i < ball_centres.size(); ++i)
           {
-            const Tensor<1, dim> axis = ball_centres[j] - ball_centres[i];
-            const double         c    = axis.norm();
-            if (j == i || c >= ball_radii[i] + ball_radii[j] ||
-                c <= std::abs(ball_radii[i] - ball_radii[j]))
+            if (gaps[i] > bound)
               continue;
-            const Tensor<1, dim> e = axis / c;
-            const double l = (c * c + ball_radii[i] * ball_radii[i] -
-                              ball_radii[j] * ball_radii[j]) /
-                             (2 * c);
-            const double ring = std::sqrt(ball_radii[i] * ball_radii[i] - l * l);
-            const double t    = (x - l * e) * e;
-            const double rho  = (x - l * e - t * e).norm();
-            depth = std::min(depth, std::hypot(t, rho - ring));
+            const Tensor<1, dim> x = p - ball_centres[i];
+            const double         r = x.norm();
+            if (r > 0 && !covered(ball_centres[i] + ball_radii[i] / r * x, i))
+              depth = std::min(depth, std::abs(ball_radii[i] - r));
+            for (const unsigned int j : neighbours[i])
+              {
+                const Tensor<1, dim> axis = ball_centres[j] - ball_centres[i];
+                const double         c    = axis.norm();
+                if (c <= std::abs(ball_radii[i] - ball_radii[j]))
+                  continue;
+                const Tensor<1, dim> e = axis / c;
+                const double l = (c * c + ball_radii[i] * ball_radii[i] -
+                                  ball_radii[j] * ball_radii[j]) /
+                                 (2 * c);
+                const double ring =
+                  std::sqrt(ball_radii[i] * ball_radii[i] - l * l);
+                const double t   = (x - l * e) * e;
+                const double rho = (x - l * e - t * e).norm();
+                depth            = std::min(depth, std::hypot(t, rho - ring));
+              }
           }
+        if (depth <= bound)
+          return depth;
       }
-    return depth;
   }
 
   SlottedDisk::SlottedDisk(const Point<2> &centre,

@@ -43,11 +43,18 @@ namespace levelsinter
     }
 
   private:
+    void
+    find_neighbours();
+
     double
-    depth_inside(const Point<dim> &p) const;
+    depth_inside(const Point<dim> &p, const std::vector<double> &gaps) const;
 
     std::vector<Point<dim>> ball_centres;
     std::vector<double>     ball_radii;
+    // The balls that overlap ball i: only they can cover a point of its
+    // sphere or form a junction ring with it.
+    std::vector<std::vector<unsigned int>> neighbours;
+    double                                 largest_radius = 0;
   };
 
   /**
