@@ -1,3 +1,5 @@
+#include <deal.II/grid/grid_tools.h>
+
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/level_set/interface_measures.h>
 
@@ -205,6 +207,13 @@ namespace levelsinter::neck_measures
     std::vector<PairNeck>                              equal, unequal;
     std::vector<Section<dim>>                          mid_planes;
     std::vector<std::pair<Point<dim>, Point<dim>>>     searched;
+    // Candidates: pairs whose spheres overlap or whose gap is below one
+    // finest cell (a packing's nearly tangent contacts, which the mesh
+    // joins); a pair the level set does not join measures 0.
+    const double h_min =
+      GridTools::minimal_cell_diameter(
+        level_set.dof_handler().get_triangulation()) /
+      std::sqrt(double(dim));
     for (unsigned int i = 0; i < particles.size(); ++i)
       for (unsigned int j = i + 1; j < particles.size(); ++j)
         {
@@ -215,7 +224,7 @@ namespace levelsinter::neck_measures
               c2[d] = particles[j][d];
             }
           if (particles.size() == 2 ||
-              c1.distance(c2) < particles[i][dim] + particles[j][dim])
+              c1.distance(c2) < particles[i][dim] + particles[j][dim] + h_min)
             {
               if (particles[i][dim] == particles[j][dim])
                 {

@@ -1,5 +1,7 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
@@ -120,6 +122,7 @@ namespace levelsinter
                                       "closed_porosity",
                                       "closed_pores",
                                       "closed_pore_volume",
+                                      "sub_cell_pockets",
                                       "neck_min",
                                       "neck_mean",
                                       "neck_max",
@@ -198,7 +201,22 @@ namespace levelsinter
     const double relative_density =
       solid.window_volume > 0 ? solid.window_solid / solid.window_volume : nan;
 
-    last_pores = find_pores(level_set, symmetry_boundaries, window);
+    // Closed components smaller than one finest cell are sub-cell pockets
+    // of the Q1 level set (at contacts and in crevices: median 0.03 h^3 in
+    // the 154-particle packing), not pores the mesh resolves; they are
+    // counted apart and neither tracked nor logged.
+    const double cell_volume = std::pow(
+      GridTools::minimal_cell_diameter(
+        level_set.dof_handler().get_triangulation()) /
+        std::sqrt(double(dim)),
+      dim);
+    last_pores.clear();
+    unsigned int n_pockets = 0;
+    for (const auto &pore : find_pores(level_set, symmetry_boundaries, window))
+      if (pore.open || pore.volume >= cell_volume)
+        last_pores.push_back(pore);
+      else
+        ++n_pockets;
     const std::vector<Pore<dim>> &pores = last_pores;
     std::vector<typename PoreTracker<dim>::Event> events;
     const std::vector<unsigned int> ids = tracker.update(pores, events);
@@ -243,6 +261,7 @@ namespace levelsinter
       closed_porosity,
       double(n_closed),
       closed_volume,
+      double(n_pockets),
       neck_min,
       contacts > 0 ? neck_sum / contacts : nan,
       neck_max,

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -174,6 +175,29 @@ namespace levelsinter
       archive &*packing_analysis;
     if (particle_centres)
       archive &*particle_centres;
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::write_timing() const
+  {
+    if (scene.output.directory.empty())
+      return;
+    const auto wall  = timer_output.get_summary_data(TimerOutput::total_wall_time);
+    const auto cpu   = timer_output.get_summary_data(TimerOutput::total_cpu_time);
+    const auto calls = timer_output.get_summary_data(TimerOutput::n_calls);
+    if (Utilities::MPI::this_mpi_process(comm) != 0)
+      return;
+    // Replaced whole each time, so a reader never sees half a table.
+    const std::string file = scene.output.directory + "/timing.csv";
+    {
+      std::ofstream out(file + ".tmp");
+      out << "section,calls,wall_seconds,cpu_seconds\n";
+      for (const auto &[section, seconds] : wall)
+        out << '"' << section << "\"," << calls.at(section) << ','
+            << seconds << ',' << cpu.at(section) << '\n';
+    }
+    std::filesystem::rename(file + ".tmp", file);
   }
 
   template <int dim>
@@ -560,9 +584,16 @@ namespace levelsinter
         const double steps_left =
           scene.time.max_steps > 0 ? double(scene.time.max_steps) - step :
                                      std::numeric_limits<double>::max();
+        // Time/Time step caps a CFL step unless a relative step grows it.
+        const double max_step =
+          scene.time.time_step > 0 && scene.time.relative_time_step == 0 ?
+            scene.time.time_step :
+            std::numeric_limits<double>::infinity();
         const double eta =
           final_step ? 0. :
-                       remaining_time.estimate(scene.time.end_time, steps_left);
+                       remaining_time.estimate(scene.time.end_time,
+                                               steps_left,
+                                               max_step);
         pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
               << std::setprecision(5) << t << " / " << scene.time.end_time
               << "  dt = " << std::setw(10) << std::setprecision(3) << dt
@@ -686,7 +717,10 @@ namespace levelsinter
         if (step_observer)
           step_observer(step, t, alpha);
         if (signal != 0 || (!finished && checkpoint_due(step)))
-          write_checkpoint(step, t);
+          {
+            write_checkpoint(step, t);
+            write_timing();
+          }
         if (signal != 0)
           {
             summary.stop_signal = signal;
@@ -694,6 +728,7 @@ namespace levelsinter
           }
       }
 
+    write_timing();
     summary.steps = step;
     summary.time  = t;
     summary.wall_time =

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deque>
+#include <limits>
 
 namespace levelsinter
 {
@@ -25,10 +26,14 @@ namespace levelsinter
 
     /**
      * Wall seconds to reach @p end_time or to take @p steps_left more steps,
-     * whichever comes first; negative while fewer than two steps are known.
+     * whichever comes first, with steps of at most @p max_step; negative
+     * while fewer than two steps are known.
      */
     double
-    estimate(const double end_time, const double steps_left) const;
+    estimate(const double end_time,
+             const double steps_left,
+             const double max_step =
+               std::numeric_limits<double>::infinity()) const;
 
   private:
     struct Step

@@ -176,6 +176,11 @@ namespace levelsinter
     checkpoint_due(const unsigned int step) const;
     void
     write_checkpoint(const unsigned int step, const double t);
+
+    /** TimerOutput's sections (calls, wall and CPU seconds of this process
+     *  run) to OUTPUT_DIR/timing.csv, at each checkpoint and at the end. */
+    void
+    write_timing() const;
     // Both directions of the checkpoint's counters (boost archives).
     template <class Archive>
     void
