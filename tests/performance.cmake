@@ -68,3 +68,32 @@ add_test(NAME performance_table COMMAND
   ${PERF_CSVS})
 set_tests_properties(performance_table PROPERTIES LABELS benchmark
   FIXTURES_REQUIRED "${PERF_FIXTURES}")
+
+# --- The paper's 154-particle packings (doc/performance.md, "The
+# 154-particle runs"): the run itself with a checkpoint every 5 steps (it
+# can be resumed with levelsinter --resume), then its history: necks x/R,
+# density, shrinkage, pores and volume change (scripts/packing_history.py).
+# Surface diffusion to t = 0.06 (62 steps, about 35 min on 2 cores); the
+# coupled packing for its first 50 steps (the paper's run has 550).
+function(packing_154_run name scene limit)
+  string(REPLACE "_" " " title "154 particles, ${name}")
+  add_test(NAME packing_154_${name}_run COMMAND ${MPIRUN} ${MPIRUN_FLAGS}
+    -np 2 $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Directory=${CMAKE_CURRENT_BINARY_DIR}/packing_154_${name}"
+    --set "Output/Checkpoint interval=5" --set "${limit}"
+    ${CMAKE_SOURCE_DIR}/parameter_files/${scene})
+  set_tests_properties(packing_154_${name}_run PROPERTIES LABELS benchmark
+    TIMEOUT 14400 FIXTURES_SETUP packing_154_${name})
+  add_test(NAME packing_154_${name}_history COMMAND
+    ${CMAKE_SOURCE_DIR}/scripts/packing_history.py
+    ${CMAKE_CURRENT_BINARY_DIR}/packing_154_${name}
+    ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_3d.csv
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_154_${name}.csv
+    --png ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_154_${name}.png
+    --title "${title}")
+  set_tests_properties(packing_154_${name}_history PROPERTIES
+    LABELS benchmark FIXTURES_REQUIRED packing_154_${name})
+endfunction()
+packing_154_run(surface_diffusion packing_154_surface_diffusion_3d.prm
+  "Time/End time=0.06")
+packing_154_run(coupled packing_154_coupled_3d.prm "Time/Maximum steps=50")

@@ -65,8 +65,9 @@ namespace levelsinter
                         "gmres",
                         Patterns::Selection("direct|gmres"),
                         "gmres: FGMRES with a block-triangular preconditioner "
-                        "(Schur complement (M + b L) M^-1 (M + b K), CG with "
-                        "AMG inside), 20-30 iterations whatever h and dt, "
+                        "(Schur complement (M + b L) M^-1 (M + b K), CG "
+                        "with Jacobi, or AMG where Jacobi is slow, inside), "
+                        "15-30 iterations whatever h and dt, "
                         "runs in parallel; direct: KLU (Trilinos Amesos) on "
                         "the coupled system, serial factorisation, for small "
                         "2D checks (doc/numerics.md).");
