@@ -88,7 +88,7 @@ for count in (154, 1000, 10000):
 
 fig, ax = plt.subplots(figsize=(6.5, 4.5))
 ax.loglog(n, cpu, "o", label="CPU s per step (both ranks)")
-ax.loglog(n, wall, "s", label="wall s per step (shared cores)")
+ax.loglog(n, wall, "s", label="wall s per step")
 grid = [8 * (10000 / 8) ** (k / 50) for k in range(51)]
 ax.loglog(grid, [per_dof * per_particle * x for x in grid], "-", color="C0",
           label=f"CPU linear in the DoFs of N = "
