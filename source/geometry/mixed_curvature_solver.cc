@@ -75,22 +75,17 @@ namespace levelsinter
             try
               {
                 cg.solve(matrix, dst, src, jacobi);
-                iterations += control.last_step();
                 return;
               }
             catch (const SolverControl::NoConvergence &)
               {
-                iterations += control.last_step();
                 build_amg();
               }
           }
         SolverControl    control(1000, target);
         SolverCG<Vector> cg(control);
         cg.solve(matrix, dst, src, amg);
-        iterations += control.last_step();
       }
-
-      mutable unsigned int iterations = 0;
 
     private:
       void
@@ -364,9 +359,6 @@ namespace levelsinter
           control, SolverFGMRES<BlockVector>::AdditionalData(100));
         gmres.solve(block_system, solution, block_rhs, preconditioner);
         iterations = control.last_step();
-        inner_iterations = mass_inverse.iterations +
-                           tangential_inverse.iterations +
-                           isotropic_inverse.iterations;
       }
 
     const auto &constraints = level_set.constraints();

@@ -133,8 +133,6 @@ namespace levelsinter
     std::array<Vector, dim>        normals;
 
   public:
-    /** CG iterations of the inner solves in the last coupled solve. */
-    unsigned int inner_iterations = 0;
     /** CPU seconds of the last linear solve, summed over the ranks. */
     double solve_cpu_time = 0;
   };
