@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <cmath>
 #include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -31,11 +32,29 @@ namespace levelsinter
   {
     // The signal that asked the run to stop; see stop_on_signals().
     volatile std::sig_atomic_t stop_signal = 0;
+    // When it came (CLOCK_MONOTONIC seconds).
+    volatile std::sig_atomic_t stop_signal_time = 0;
 
     extern "C" void
     record_stop_signal(const int signal)
     {
-      stop_signal = signal;
+      // One request often arrives twice: `timeout` and job schedulers
+      // signal the process and then its whole process group. A repeat
+      // within two seconds is that same request; a later one is a user
+      // insisting, and kills as the default action would.
+      // (clock_gettime, signal and raise are async-signal-safe.)
+      timespec now;
+      clock_gettime(CLOCK_MONOTONIC, &now);
+      if (stop_signal == 0)
+        {
+          stop_signal      = signal;
+          stop_signal_time = static_cast<std::sig_atomic_t>(now.tv_sec);
+        }
+      else if (now.tv_sec - stop_signal_time > 2)
+        {
+          std::signal(signal, SIG_DFL);
+          std::raise(signal);
+        }
     }
 
     std::string
@@ -57,8 +76,7 @@ namespace levelsinter
   {
     struct sigaction action = {};
     action.sa_handler       = record_stop_signal;
-    // SA_RESETHAND: a second signal finds the default action and kills.
-    action.sa_flags = SA_RESETHAND;
+    action.sa_flags         = 0;
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);

@@ -32,7 +32,8 @@ namespace levelsinter
    * after its current step, as if that were the last (its metrics row and
    * fields are written, and a checkpoint), instead of killing the process; the signal is in
    * Summary::stop_signal. The handler only records the signal; a second
-   * one acts as usual (kills at once). For a program's main.
+   * one more than two seconds later acts as usual (kills at once), an
+   * earlier one is taken as the same request. For a program's main.
    */
   void
   stop_on_signals();
