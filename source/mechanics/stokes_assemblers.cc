@@ -9,41 +9,39 @@ namespace levelsinter
   StokesCellData<dim>::StokesCellData(const std::vector<unsigned int> &component)
     : component(component)
     , n_dofs(component.size())
-  {}
+  {
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
+  }
 
   template <int dim>
   void
   StokesCellData<dim>::reinit(const FEValues<dim> &values)
   {
-    const FEValuesExtractors::Vector velocity(0);
-    const FEValuesExtractors::Scalar pressure(dim);
     n_q = values.n_quadrature_points;
-    JxW.resize(n_q);
-    law.resize(n_q);
-    tau.resize(n_q);
-    history.resize(n_q);
-    balanced_force.resize(n_q);
-    eps.resize(n_q, std::vector<SymmetricTensor<2, dim>>(n_dofs));
-    grad_w.resize(n_q, std::vector<Tensor<2, dim>>(n_dofs));
-    w.resize(n_q, std::vector<Tensor<1, dim>>(n_dofs));
-    div.resize(n_q, std::vector<double>(n_dofs));
-    q.resize(n_q, std::vector<double>(n_dofs));
-    grad_q.resize(n_q, std::vector<Tensor<1, dim>>(n_dofs));
+    // Grown, never shrunk: the rule alternates between 2 and 3 points per
+    // direction from cell to cell.
+    if (JxW.size() < n_q)
+      {
+        JxW.resize(n_q);
+        law.resize(n_q);
+        tau.resize(n_q);
+        history.resize(n_q);
+        balanced_force.resize(n_q);
+        value.resize(n_q, std::vector<double>(n_dofs));
+        gradient.resize(n_q, std::vector<Tensor<1, dim>>(n_dofs));
+      }
     for (unsigned int k = 0; k < n_q; ++k)
       {
         JxW[k] = values.JxW(k);
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
-            eps[k][i]    = values[velocity].symmetric_gradient(i, k);
-            grad_w[k][i] = values[velocity].gradient(i, k);
-            w[k][i]      = values[velocity].value(i, k);
-            div[k][i]    = values[velocity].divergence(i, k);
-            q[k][i]      = values[pressure].value(i, k);
-            grad_q[k][i] = values[pressure].gradient(i, k);
+            value[k][i]    = values.shape_value_component(i, k, component[i]);
+            gradient[k][i] = values.shape_grad_component(i, k, component[i]);
           }
+        history[k]        = HistoryTerms<dim>();
+        balanced_force[k] = Tensor<1, dim>();
       }
-    std::fill(history.begin(), history.end(), HistoryTerms<dim>());
-    std::fill(balanced_force.begin(), balanced_force.end(), Tensor<1, dim>());
     surface.clear();
     free_faces.clear();
   }
@@ -53,56 +51,69 @@ namespace levelsinter
   BulkAssembler<dim>::assemble(const StokesCellData<dim> &data,
                                CellContribution          &cell) const
   {
-    // Each shape function of the FESystem has one component: only
-    // velocity-velocity (eps:eps), velocity-pressure (div q) and
+    // Only velocity-velocity (eps:eps), velocity-pressure (div q) and
     // pressure-pressure pairs are nonzero. The operator is symmetric apart
-    // from a2, so the same-type pairs fill the upper triangle.
+    // from a2, so the same-type pairs fill the upper triangle (the lists of
+    // shape functions are ascending).
+    const auto &velocity_dofs = data.velocity_dofs;
+    const auto &pressure_dofs = data.pressure_dofs;
     for (unsigned int k = 0; k < data.n_q; ++k)
       {
-        const PhaseCoefficients &law = data.law[k];
-        const double             JxW = data.JxW[k];
-        const auto              &eps = data.eps[k];
-        const auto              &div = data.div[k];
-        const auto              &q   = data.q[k];
-        for (unsigned int i = 0; i < data.n_dofs; ++i)
+        const PhaseCoefficients &law  = data.law[k];
+        const double             JxW  = data.JxW[k];
+        const auto              &g    = data.gradient[k];
+        const auto              &q    = data.value[k];
+        const double             a1_2 = 0.5 * law.a1 * JxW;
+        for (unsigned int a = 0; a < velocity_dofs.size(); ++a)
           {
-            const bool i_pressure = data.is_pressure(i);
-            for (unsigned int j = i; j < data.n_dofs; ++j)
+            const unsigned int i  = velocity_dofs[a];
+            const unsigned int ci = data.component[i];
+            // eps(w_i) : eps(w_j) = (delta_{c_i c_j} g_i . g_j
+            //                        + g_i[c_j] g_j[c_i]) / 2.
+            for (unsigned int b = a; b < velocity_dofs.size(); ++b)
               {
-                const bool j_pressure = data.is_pressure(j);
-                if (!i_pressure && !j_pressure)
-                  cell.matrix(i, j) += law.a1 * eps[i] * eps[j] * JxW;
-                else if (i_pressure && j_pressure)
-                  {
-                    cell.matrix(i, j) -=
-                      law.compressibility * q[i] * q[j] * JxW;
-                    // Schur approximation M_{1/eta_K} + C (eta_K =
-                    // a1_cell / 2).
-                    cell.schur(i, j) += (2 / data.a1_cell +
-                                         law.compressibility) *
-                                        q[i] * q[j] * JxW;
-                  }
-                else
-                  {
-                    // a2 weighs p in the momentum equation only (the
-                    // elastic law has a2 != 1): both entries here.
-                    const unsigned int v = i_pressure ? j : i;
-                    const unsigned int p = i_pressure ? i : j;
-                    cell.matrix(v, p) -= law.a2 * div[v] * q[p] * JxW;
-                    cell.matrix(p, v) -= div[v] * q[p] * JxW;
-                  }
+                const unsigned int j  = velocity_dofs[b];
+                const unsigned int cj = data.component[j];
+                double eps_eps = g[i][cj] * g[j][ci];
+                if (ci == cj)
+                  eps_eps += g[i] * g[j];
+                cell.matrix(i, j) += a1_2 * eps_eps;
+              }
+            // a2 weighs p in the momentum equation only (the elastic law
+            // has a2 != 1): both entries here.
+            const double div_i = g[i][ci] * JxW;
+            for (const unsigned int p : pressure_dofs)
+              {
+                cell.matrix(i, p) -= law.a2 * div_i * q[p];
+                cell.matrix(p, i) -= div_i * q[p];
               }
           }
+        // Schur approximation M_{1/eta_K} + C (eta_K = a1_cell / 2).
+        const double schur_weight =
+          (2 / data.a1_cell + law.compressibility) * JxW;
+        for (unsigned int a = 0; a < pressure_dofs.size(); ++a)
+          for (unsigned int b = a; b < pressure_dofs.size(); ++b)
+            {
+              const unsigned int i = pressure_dofs[a], j = pressure_dofs[b];
+              cell.matrix(i, j) -= law.compressibility * q[i] * q[j] * JxW;
+              cell.schur(i, j) += schur_weight * q[i] * q[j];
+            }
 
         // The law's memory (elastic solid, Eq. 93-94): -sigma_hist : grad
         // w, and div v + c_p p = r in the (negated) continuity rows.
         const HistoryTerms<dim> &history = data.history[k];
         if (history.stress.norm() != 0 || history.dilatation_rate != 0)
-          for (unsigned int i = 0; i < data.n_dofs; ++i)
-            cell.rhs(i) -=
-              (data.is_pressure(i) ? history.dilatation_rate * q[i] :
-                                     history.stress * eps[i]) *
-              JxW;
+          {
+            for (const unsigned int i : velocity_dofs)
+              {
+                Tensor<1, dim> stress_row;
+                for (unsigned int d = 0; d < dim; ++d)
+                  stress_row[d] = history.stress[data.component[i]][d];
+                cell.rhs(i) -= stress_row * g[i] * JxW;
+              }
+            for (const unsigned int p : pressure_dofs)
+              cell.rhs(p) -= history.dilatation_rate * q[p] * JxW;
+          }
       }
   }
 
@@ -114,16 +125,16 @@ namespace levelsinter
     for (unsigned int k = 0; k < data.n_q; ++k)
       {
         const double weight = data.tau[k] * data.JxW[k];
-        const auto  &grad_q = data.grad_q[k];
-        for (unsigned int i = 0; i < data.n_dofs; ++i)
-          if (data.is_pressure(i))
-            for (unsigned int j = i; j < data.n_dofs; ++j)
-              if (data.is_pressure(j))
-                {
-                  const double entry = weight * (grad_q[i] * grad_q[j]);
-                  cell.matrix(i, j) -= entry;
-                  cell.schur(i, j) += entry;
-                }
+        const auto  &grad_q = data.gradient[k];
+        const auto  &pressure_dofs = data.pressure_dofs;
+        for (unsigned int a = 0; a < pressure_dofs.size(); ++a)
+          for (unsigned int b = a; b < pressure_dofs.size(); ++b)
+            {
+              const unsigned int i = pressure_dofs[a], j = pressure_dofs[b];
+              const double entry = weight * (grad_q[i] * grad_q[j]);
+              cell.matrix(i, j) -= entry;
+              cell.schur(i, j) += entry;
+            }
       }
   }
 
@@ -156,8 +167,8 @@ namespace levelsinter
         const Tensor<1, dim> &f = data.balanced_force[k];
         for (unsigned int i = 0; i < data.n_dofs; ++i)
           cell.rhs(i) += (data.is_pressure(i) ?
-                            -data.tau[k] * (f * data.grad_q[k][i]) :
-                            f * data.w[k][i]) *
+                            -data.tau[k] * (f * data.gradient[k][i]) :
+                            f[data.component[i]] * data.value[k][i]) *
                          data.JxW[k];
       }
   }

@@ -447,8 +447,14 @@ namespace levelsinter
                 const double weight =
                   heaviside.dirac(alpha_q[k]) * norm * data.JxW[k];
                 if (weight > 0)
-                  data.surface.push_back(
-                    {grad_alpha_q[k] / norm, weight, data.grad_w[k]});
+                  {
+                    typename StokesCellData<dim>::SurfacePoint point{
+                      grad_alpha_q[k] / norm, weight, {}};
+                    point.grad_w.resize(n);
+                    for (unsigned int i = 0; i < n; ++i)
+                      point.grad_w[i] = data.velocity_gradient(k, i);
+                    data.surface.push_back(std::move(point));
+                  }
               }
           if (surface_measure && sharp)
             {

@@ -74,17 +74,33 @@ namespace levelsinter
     double a1_cell = 0;
 
     // Per volume quadrature point k, [k][i] per shape function i.
-    std::vector<double>                              JxW;
-    std::vector<PhaseCoefficients>                   law;
-    std::vector<double>                              tau; // ASGS, Eq. 99
-    std::vector<HistoryTerms<dim>>                   history;
-    std::vector<Tensor<1, dim>>                      balanced_force;
-    std::vector<std::vector<SymmetricTensor<2, dim>>> eps;
-    std::vector<std::vector<Tensor<2, dim>>>          grad_w;
-    std::vector<std::vector<Tensor<1, dim>>>          w;
-    std::vector<std::vector<double>>                  div;
-    std::vector<std::vector<double>>                  q;
-    std::vector<std::vector<Tensor<1, dim>>>          grad_q;
+    // Per quadrature point (sized for the largest rule seen: entries from
+    // n_q on are stale).
+    std::vector<double>            JxW;
+    std::vector<PhaseCoefficients> law;
+    std::vector<double>            tau; // ASGS, Eq. 99
+    std::vector<HistoryTerms<dim>> history;
+    std::vector<Tensor<1, dim>>    balanced_force;
+    // Each shape function of the FESystem has one nonzero component
+    // (component[i]): its value and gradient per point and shape function.
+    // A velocity shape function is w = value e_c, grad w = e_c (x)
+    // gradient; a pressure one is q = value, grad q = gradient.
+    std::vector<std::vector<double>>         value;
+    std::vector<std::vector<Tensor<1, dim>>> gradient;
+
+    std::vector<unsigned int> velocity_dofs;
+    std::vector<unsigned int> pressure_dofs;
+
+    /** grad w of velocity shape function @p i at point @p k (zero for a
+     * pressure shape function). */
+    Tensor<2, dim>
+    velocity_gradient(const unsigned int k, const unsigned int i) const
+    {
+      Tensor<2, dim> grad_w;
+      if (!is_pressure(i))
+        grad_w[component[i]] = gradient[k][i];
+      return grad_w;
+    }
 
     std::vector<SurfacePoint> surface;
     std::vector<FacePoint>    free_faces;
