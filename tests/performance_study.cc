@@ -38,6 +38,8 @@ namespace
       "surface diffusion velocity",
       "normal gradient: assembly",
       "normal gradient: solve"}},
+    {"elastic",
+     {"volume diffusion: elastic assembly", "volume diffusion: elastic solve"}},
     {"adaptation", {"mesh adaptation", "system setup after adaptation"}},
     {"metrics", {"metrics"}}, // holds the packing analysis
     {"packing_analysis", {"packing analysis"}},

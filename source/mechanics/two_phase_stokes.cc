@@ -569,7 +569,7 @@ namespace levelsinter
           {
             // A diagnosis instead of deal.II's stack trace.
             std::ostringstream message;
-            message << "viscous flow: FGMRES did not reach the relative "
+            message << "velocity-pressure solve: FGMRES did not reach the relative "
                     << "residual " << settings.tolerance << " in "
                     << e.last_step << " iterations (residual "
                     << e.last_residual / system_rhs.l2_norm()

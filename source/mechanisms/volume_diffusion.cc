@@ -162,8 +162,11 @@ namespace levelsinter
     const double dt_seconds = dt * seconds_per_time_unit;
     phases->set_time_step(dt > 0 ? dt_seconds : probe_step);
     {
-      TimerOutput::Scope scope(timer, "volume diffusion: mechanics");
+      TimerOutput::Scope scope(timer, "volume diffusion: elastic assembly");
       operator_->assemble(alpha, TrilinosWrappers::MPI::Vector(), 0);
+    }
+    {
+      TimerOutput::Scope scope(timer, "volume diffusion: elastic solve");
       mechanics_iterations = operator_->solve();
     }
     if (dt > 0)
