@@ -3,6 +3,8 @@
 #include <levelsinter/scene/particles.h>
 #include <levelsinter/scene/solid_geometry.h>
 
+#include <sstream>
+
 namespace levelsinter
 {
   void
@@ -211,11 +213,15 @@ namespace levelsinter
                      "radius r and the axial coordinate z of a body of "
                      "revolution");
         if (domain.lower_corner[0] != 0)
-          fail_entry("Geometry/Axisymmetric",
-                     "the axis is the domain's lower x face: 'Domain/Lower "
-                     "corner' must have x = 0 (x is the distance r from "
-                     "the axis), not " +
-                       std::to_string(domain.lower_corner[0]));
+          {
+            std::ostringstream x;
+            x << domain.lower_corner[0];
+            fail_entry("Geometry/Axisymmetric",
+                       "the axis is the domain's lower x face: 'Domain/Lower "
+                       "corner' must have x = 0 (x is the distance r from "
+                       "the axis), not " +
+                         x.str());
+          }
         // A disk across the axis but off it turns into a body with an edge
         // on the axis, which the level set cannot carry.
         for (const auto *list : {&particles, &pores})
