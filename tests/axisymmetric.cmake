@@ -100,3 +100,45 @@ bad_input_test(axisymmetric_elastic "Phase law/Law"
 
 set_tests_properties(axisymmetric_two_spheres_coalescence PROPERTIES
   RESOURCE_LOCK viscous_spheres_output)
+
+# --- Studies (validation-long; doc/validation.md, "Axisymmetric scenes") ---
+# Static sphere at h = 1/32 ... 1/256, sharp and csf.
+add_test(NAME study_axisymmetric_static_sphere COMMAND ${VISCOUS} bubble
+  ${AXI_STATIC} 3,4,5,6 sharp,csf --csv static_sphere_axisymmetric.csv)
+# Two spheres to t gamma/(eta a) = 8 at R/h = 5, 10, 20, 40 with the 3D
+# study's settings (study_viscous_spheres_3d_vc).
+add_test(NAME study_axisymmetric_two_spheres COMMAND ${VISCOUS} spheres
+  ${AXI_SPHERES} 3,4,5,6 ${SPHERES_VC} --set "Time/End time=2"
+  --csv two_spheres_axisymmetric.csv)
+# The P_2 sphere at R/h = 16 and 32, E = 0.094 (6 h at R/h = 16) and the
+# refined band 0.075 at both, 20, 40 and 80 steps per half e-folding.
+add_test(NAME study_axisymmetric_mullins_sphere COMMAND ${SD_VALIDATE} mullins
+  ${AXI_MULLINS} 4,5 20,40,80 --time-fraction 0.5 --signs 2
+  --band-width 0.075 --filter-thickness 0.09375
+  --csv sd_sphere_axisymmetric.csv)
+# Surface diffusion between two spheres from nearly tangent (x0/R = 0.05):
+# the 3D study's settings (study_sd_two_grains_tangent_k*_rel*_3d: R/h = 8
+# in the band, filter 0.15, band 0.12, steps relative to t) with k = 3..7
+# curvature levels and r = 0.05, and k = 6, 7 with r = 0.025.
+set(AXI_GRAINS ${VISCOUS_SCENES}/two_grains_surface_diffusion_axisymmetric.prm)
+set(AXI_TANGENT --set "Geometry/Particles=0, -0.19975, 0.2; 0, 0.19975, 0.2"
+  --set "Mesh refinement/Maximum level=2"
+  --set "Level set/Filter thickness=0.15" --set "Mesh refinement/Band width=0.12"
+  --set "Time/Time step=1e-7" --set "Time/CFL number=0"
+  --set "Time/End time=1.6")
+foreach(spec "3:0.05" "4:0.05" "5:0.05" "6:0.05" "7:0.05" "6:0.025" "7:0.025")
+  string(REPLACE ":" ";" spec "${spec}")
+  list(GET spec 0 k)
+  list(GET spec 1 r)
+  set(name sd_two_grains_tangent_k${k}_rel${r}_axisymmetric)
+  add_test(NAME study_${name} COMMAND ${SD_VALIDATE} neck ${AXI_GRAINS} 3000
+    --sample-interval 4 ${AXI_TANGENT}
+    --set "Mesh refinement/Curvature refinement levels=${k}"
+    --set "Time/Relative time step=${r}" --csv ${name}.csv)
+  list(APPEND AXI_STUDIES study_${name})
+endforeach()
+set_tests_properties(study_axisymmetric_static_sphere
+  study_axisymmetric_two_spheres study_axisymmetric_mullins_sphere
+  ${AXI_STUDIES} PROPERTIES LABELS validation-long)
+set_tests_properties(study_axisymmetric_two_spheres PROPERTIES
+  RESOURCE_LOCK viscous_spheres_output)
