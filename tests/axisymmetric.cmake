@@ -142,3 +142,7 @@ set_tests_properties(study_axisymmetric_static_sphere
   ${AXI_STUDIES} PROPERTIES LABELS validation-long)
 set_tests_properties(study_axisymmetric_two_spheres PROPERTIES
   RESOURCE_LOCK viscous_spheres_output)
+# The mullins mode names its output directories by dimension, level and
+# steps: shared with the 2D Mullins runs.
+set_tests_properties(axisymmetric_mullins_sphere
+  study_axisymmetric_mullins_sphere PROPERTIES RESOURCE_LOCK sd_mullins_output)
