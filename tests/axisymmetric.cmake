@@ -146,3 +146,18 @@ set_tests_properties(study_axisymmetric_two_spheres PROPERTIES
 # steps: shared with the 2D Mullins runs.
 set_tests_properties(axisymmetric_mullins_sphere
   study_axisymmetric_mullins_sphere PROPERTIES RESOURCE_LOCK sd_mullins_output)
+# The early neck with curvature refinement: R/h = 10, 20, 40 in the band
+# with k extra levels at the neck, to t gamma/(eta a) = 2 (finest cells
+# a/h = 20 ... 160).
+foreach(spec "4:1" "4:2" "4:3" "4:4" "5:1" "5:2" "5:3" "6:1")
+  string(REPLACE ":" ";" spec "${spec}")
+  list(GET spec 0 level)
+  list(GET spec 1 k)
+  add_test(NAME study_axisymmetric_two_spheres_l${level}_k${k}
+    COMMAND ${VISCOUS} spheres ${AXI_SPHERES} ${level} ${SPHERES_VC}
+    --set "Time/End time=0.5"
+    --set "Mesh refinement/Curvature refinement levels=${k}"
+    --csv two_spheres_axisymmetric_l${level}_k${k}.csv)
+  set_tests_properties(study_axisymmetric_two_spheres_l${level}_k${k}
+    PROPERTIES LABELS validation-long RESOURCE_LOCK viscous_spheres_output)
+endforeach()
