@@ -117,8 +117,10 @@ namespace
                  const LevelSetField<dim>  &alpha)
   {
     NonMatching::RegionUpdateFlags flags;
-    flags.inside  = update_values | update_JxW_values | update_quadrature_points;
-    flags.outside = update_values | update_JxW_values | update_quadrature_points;
+    const UpdateFlags region =
+      update_values | update_JxW_values | update_quadrature_points;
+    flags.inside  = region;
+    flags.outside = region;
     CutCellValues<dim> cut(stokes.fe(), alpha, flags);
     auto              &values = cut.values;
     const FEValuesExtractors::Scalar pressure(dim);

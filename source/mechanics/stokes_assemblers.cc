@@ -79,7 +79,8 @@ namespace levelsinter
               {
                 const unsigned int j  = velocity_dofs[b];
                 const unsigned int cj = data.component[j];
-                double eps_eps = g[i][cj] * g[j][ci] + 2 * hoop_i * data.hoop(k, j);
+                double eps_eps =
+                  g[i][cj] * g[j][ci] + 2 * hoop_i * data.hoop(k, j);
                 if (ci == cj)
                   eps_eps += g[i] * g[j];
                 cell.matrix(i, j) += a1_2 * eps_eps;

@@ -37,8 +37,9 @@ namespace levelsinter
 
     /** @p measure: the measure of the scene's volumes and areas (an
      * axisymmetric scene's are those of the body of revolution). */
-    explicit LevelSetField(const parallel::distributed::Triangulation<dim> &tria,
-                           const SceneMeasure &measure = SceneMeasure());
+    explicit LevelSetField(
+      const parallel::distributed::Triangulation<dim> &tria,
+      const SceneMeasure                              &measure = SceneMeasure());
     ~LevelSetField();
 
     /** Distribute DoFs and size the vectors for the current mesh. */

@@ -87,7 +87,8 @@ namespace levelsinter
     // Per quadrature point (sized for the largest rule seen: entries from
     // n_q on are stale).
     std::vector<double>            JxW;
-    std::vector<double>            inverse_radius; // 0 off the axisymmetric case
+    // 1 / r of the hoop terms (0 off the axisymmetric case).
+    std::vector<double>            inverse_radius;
     std::vector<PhaseCoefficients> law;
     std::vector<double>            tau; // ASGS, Eq. 99
     std::vector<HistoryTerms<dim>> history;
