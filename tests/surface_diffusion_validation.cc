@@ -97,7 +97,15 @@ namespace
   // a_n = (1/pi) int_0^2pi r cos(n theta) dtheta, and dtheta = (N.e_r)/r ds
   // on a star-shaped curve, so a_n = (1/pi) int_Gamma cos(n theta) N.e_r ds.
   // In 3D the Legendre coefficient (2n+1)/2 int r P_n(cos) sin dtheta
-  // follows the same way with the solid-angle element (N.e_r)/r^2 dA.
+  // follows the same way with the solid-angle element (N.e_r)/r^2 dA; on
+  // an axisymmetric 2D scene too (dA is the body's, theta from the axis).
+  template <int dim>
+  bool
+  planar(const LevelSetField<dim> &alpha)
+  {
+    return dim == 2 && !alpha.measure().is_axisymmetric();
+  }
+
   template <int dim>
   double
   mode_amplitude(const LevelSetField<dim> &alpha,
@@ -110,7 +118,7 @@ namespace
              [&](const Point<dim> &p, const Tensor<1, dim> &normal) {
                const Tensor<1, dim> x = p - centre;
                const double         r = x.norm();
-               if constexpr (dim == 2)
+               if (planar(alpha))
                  return std::cos(mode * std::atan2(x[1], x[0])) *
                         (normal * x) / r / M_PI;
                else
@@ -148,8 +156,9 @@ namespace
     const double exact_rate =
       base.volume_diffusion.enabled ?
         2. / 3 * (1 + nu) * mode * (mode * mode - 1.) :
-      dim == 2 ? double(mode * mode) * (mode * mode - 1.) :
-                 double(mode - 1) * mode * (mode + 1) * (mode + 2);
+      dim == 2 && !base.geometry.axisymmetric ?
+        double(mode * mode) * (mode * mode - 1.) :
+        double(mode - 1) * mode * (mode + 1) * (mode + 2);
     const double end_time = time_fraction / exact_rate;
     Point<dim>   centre;
     for (unsigned int d = 0; d < dim; ++d)

@@ -1,7 +1,7 @@
 // Convergence studies of the level-set foundation, shared by the CI tests
 // (small resolutions) and the long validation runs (doc/validation.md):
 //
-//   levelsinter_validation measures DIM LEVELS [options]
+//   levelsinter_validation measures SCENE.prm PARTICLES LEVELS [options]
 //   levelsinter_validation transport SCENE.prm LEVELS [options]
 //   levelsinter_validation reinit LEVELS [options]
 //
@@ -94,19 +94,25 @@ namespace
         area                 = disk.perimeter();
         return;
       }
-    const auto  &p = scene.geometry.particles;
-    const double r = p[0][dim];
+    // An axisymmetric scene measures the body of revolution: its balls
+    // (centred on the axis) are spheres.
+    const auto  &p          = scene.geometry.particles;
+    const double r          = p[0][dim];
+    const bool   revolution = scene.geometry.axisymmetric;
     if (p.size() == 1)
       {
-        volume = dim == 2 ? M_PI * r * r : 4. / 3. * M_PI * r * r * r;
-        area   = dim == 2 ? 2 * M_PI * r : 4 * M_PI * r * r;
+        volume = dim == 2 && !revolution ? M_PI * r * r :
+                                           4. / 3. * M_PI * r * r * r;
+        area = dim == 2 && !revolution ? 2 * M_PI * r : 4 * M_PI * r * r;
         return;
       }
     double d2 = 0;
     for (unsigned int d = 0; d < dim; ++d)
       d2 += std::pow(p[1][d] - p[0][d], 2);
-    volume = two_ball_volume<dim>(r, std::sqrt(d2));
-    area   = two_ball_surface<dim>(r, std::sqrt(d2));
+    volume = revolution ? two_ball_volume<3>(r, std::sqrt(d2)) :
+                          two_ball_volume<dim>(r, std::sqrt(d2));
+    area   = revolution ? two_ball_surface<3>(r, std::sqrt(d2)) :
+                          two_ball_surface<dim>(r, std::sqrt(d2));
   }
 
   // Transport: run to the end time (where the exact shape is the initial
@@ -164,6 +170,10 @@ namespace
       {
         auto overrides = resolution_overrides(base, level, options);
         overrides.emplace_back("Geometry/Particles", particles);
+        // --set entries (e.g. Geometry/Axisymmetric) last.
+        overrides.insert(overrides.end(),
+                         options.overrides.begin(),
+                         options.overrides.end());
         const auto scene = read_scene(scene_file, overrides);
         const double h = study::cell_size(scene, level);
         Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);

@@ -145,7 +145,8 @@ namespace levelsinter
     std::vector<Tensor<1, dim>> moment(n);
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && window.point_inside(cell->center()))
-        result.window_volume += cell->measure();
+        result.window_volume +=
+          cell->measure() * level_set.measure().weight(cell->center());
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.solid_flags = update_JxW_values | update_quadrature_points;
     integrands.on_solid    = [&](const auto &cell, const auto &values) {
@@ -153,8 +154,9 @@ namespace levelsinter
       Tensor<1, dim> cell_moment;
       for (const unsigned int q : values.quadrature_point_indices())
         {
-          cell_solid += values.JxW(q);
-          cell_moment += values.JxW(q) * values.quadrature_point(q);
+          const double JxW = level_set.measure().JxW(values, q);
+          cell_solid += JxW;
+          cell_moment += JxW * values.quadrature_point(q);
         }
       if (window.point_inside(cell->center()))
         result.window_solid += cell_solid;

@@ -78,9 +78,10 @@ namespace levelsinter
             if (x.distance_square(centres[near[k]]) - squared_radii[near[k]] <
                 x.distance_square(centres[owner]) - squared_radii[owner])
               owner = near[k];
-          volume[owner] += values.JxW(q);
+          const double JxW = level_set.measure().JxW(values, q);
+          volume[owner] += JxW;
           for (unsigned int d = 0; d < dim; ++d)
-            moment[owner * dim + d] += values.JxW(q) * x[d];
+            moment[owner * dim + d] += JxW * x[d];
         }
     };
     interface_measures::integrate_regions(level_set, integrands);

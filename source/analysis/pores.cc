@@ -213,10 +213,11 @@ namespace levelsinter
           if (l == none)
             continue;
           auto &s = sums[l];
-          s.volume += values.JxW(q);
-          s.first_moment += values.JxW(q) * values.quadrature_point(q);
+          const double JxW = level_set.measure().JxW(values, q);
+          s.volume += JxW;
+          s.first_moment += JxW * values.quadrature_point(q);
           if (in_window)
-            s.volume_in_window += values.JxW(q);
+            s.volume_in_window += JxW;
         }
     };
     integrands.on_surface = [&](const auto &cell, const auto &values) {
@@ -224,7 +225,7 @@ namespace levelsinter
       for (const unsigned int q : values.quadrature_point_indices())
         if (const double l = owner(values.get_quadrature().point(q));
             l != none)
-          sums[l].area += values.JxW(q);
+          sums[l].area += level_set.measure().JxW(values, q);
     };
     interface_measures::integrate_regions(level_set, integrands);
     for (const auto &cell : dofs.active_cell_iterators())

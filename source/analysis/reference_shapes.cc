@@ -229,11 +229,13 @@ namespace levelsinter
   PerturbedBall<dim>::PerturbedBall(const Point<dim>  &centre,
                                     const double       radius,
                                     const double       amplitude,
-                                    const unsigned int mode)
+                                    const unsigned int mode,
+                                    const bool         revolution)
     : centre(centre)
     , radius(radius)
     , delta(amplitude)
     , mode(mode)
+    , revolution(revolution)
   {}
 
   template <int dim>
@@ -245,7 +247,7 @@ namespace levelsinter
     if (r == 0)
       return -radius * (1 - delta);
     double shape = 0, slope = 0; // r(angle)/R - 1 and its angular derivative
-    if constexpr (dim == 2)
+    if (dim == 2 && !revolution)
       {
         const double theta = std::atan2(x[1], x[0]);
         shape               = delta * std::cos(mode * theta);
@@ -253,7 +255,8 @@ namespace levelsinter
       }
     else
       {
-        // P_n(c) and P_n'(c) by the three-term recurrences.
+        // P_n(c) and P_n'(c) by the three-term recurrences; the polar
+        // angle from the last axis (the axis of revolution in 2D).
         const double c = x[dim - 1] / r;
         double       p_prev = 1, p = c, dp_prev = 0, dp = 1;
         if (mode == 0)
@@ -314,7 +317,8 @@ namespace levelsinter
           centre,
           particle[dim],
           scene.geometry.perturbation_amplitude,
-          scene.geometry.perturbation_mode);
+          scene.geometry.perturbation_mode,
+          scene.geometry.axisymmetric);
       }
     if constexpr (dim == 2)
       {

@@ -204,7 +204,8 @@ namespace levelsinter
     FEValues<dim>      fe_values(level_set.fe(),
                             quadrature,
                             update_values | update_gradients |
-                              update_JxW_values);
+                              update_JxW_values | update_quadrature_points);
+    const SceneMeasure &measure = level_set.measure();
     const unsigned int n  = level_set.fe().dofs_per_cell;
     const unsigned int nq = quadrature.size();
     FullMatrix<double> m_kk(n, n), m_kv(n, n), m_vk(n, n), m_vv(n, n);
@@ -213,7 +214,7 @@ namespace levelsinter
     std::vector<double>                  alpha_values(nq);
     std::vector<Tensor<1, dim>> alpha_gradients(nq), lag_gradients(nq),
       normal_gradients(nq);
-    std::vector<double> divergence(nq);
+    std::vector<double> divergence(nq), radial_normal(nq);
 
     // DoFs no band cell touches get kappa = v_s = 0 (identity rows).
     Vector touched;
@@ -230,7 +231,12 @@ namespace levelsinter
           fe_values.get_function_gradients(level_set.alpha(), alpha_gradients);
           if (lag > 0)
             fe_values.get_function_gradients(previous_velocity, lag_gradients);
-          std::fill(divergence.begin(), divergence.end(), 0.);
+          // div N, on a body of revolution with the azimuthal N_r / r.
+          fe_values.get_function_values(normals[0], radial_normal);
+          for (unsigned int q = 0; q < nq; ++q)
+            divergence[q] =
+              radial_normal[q] *
+              measure.inverse_radius(fe_values.quadrature_point(q));
           for (unsigned int c = 0; c < dim; ++c)
             {
               fe_values.get_function_gradients(normals[c], normal_gradients);
@@ -261,7 +267,10 @@ namespace levelsinter
               const double g = std::clamp(grad_d.norm(), 0.2, 5.);
               const double A =
                 std::clamp((grad_d - lag * lag_gradients[q]).norm(), 0.2, 5.);
-              const double JxW = fe_values.JxW(q);
+              // In the scene's measure: on a body of revolution the forms
+              // integrated by parts (Eq. 80 and the surface Laplacian) are
+              // the 3D ones, with no further term (doc/numerics.md).
+              const double JxW = measure.JxW(fe_values, q);
               for (unsigned int i = 0; i < n; ++i)
                 {
                   const double          phi_i    = fe_values.shape_value(i, q);

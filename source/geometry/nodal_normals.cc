@@ -57,14 +57,18 @@ namespace levelsinter
       sum.compress(VectorOperation::add);
     // Nodes on a symmetry face: the mirror cells' sum cancels the component
     // across the face (ghost cells too, so that every owned node is seen).
+    // The axis of an axisymmetric scene (face x-, id 0) is one: n_r = 0
+    // there.
+    std::vector<types::boundary_id> mirrors = symmetry_boundaries;
+    if (level_set.measure().is_axisymmetric())
+      mirrors.push_back(0);
     for (const auto &cell : dofs.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
           if (cell->face(f)->at_boundary() &&
-              std::find(symmetry_boundaries.begin(),
-                        symmetry_boundaries.end(),
-                        cell->face(f)->boundary_id()) !=
-                symmetry_boundaries.end())
+              std::find(mirrors.begin(),
+                        mirrors.end(),
+                        cell->face(f)->boundary_id()) != mirrors.end())
             {
               const unsigned int axis = cell->face(f)->boundary_id() / 2;
               for (const unsigned int v : cell->face(f)->vertex_indices())

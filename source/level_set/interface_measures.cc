@@ -74,10 +74,16 @@ namespace levelsinter::interface_measures
     NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
     classifier.reclassify();
 
+    // The points as well: every integrand weighs JxW with the scene's
+    // measure (SceneMeasure::JxW), which reads them.
+    const auto with_points = [](const UpdateFlags region) {
+      return region == update_default ? region :
+                                        region | update_quadrature_points;
+    };
     NonMatching::RegionUpdateFlags flags;
-    flags.inside  = integrands.solid_flags;
-    flags.outside = integrands.atmosphere_flags;
-    flags.surface = integrands.surface_flags;
+    flags.inside  = with_points(integrands.solid_flags);
+    flags.outside = with_points(integrands.atmosphere_flags);
+    flags.surface = with_points(integrands.surface_flags);
     const hp::FECollection<dim> fe_collection(level_set.fe());
     // Three Gauss points per direction integrate the Q1 level set's
     // implicit surface to far below its interpolation error.
@@ -124,18 +130,19 @@ namespace levelsinter::interface_measures
     static std::pair<std::uint64_t, VolumeAndArea> last = {0, {}};
     if (level_set.state_id() != 0 && level_set.state_id() == last.first)
       return last.second;
-    VolumeAndArea result;
+    VolumeAndArea       result;
+    const SceneMeasure &measure = level_set.measure();
     integrate_cut<dim>(
       level_set,
       update_JxW_values,
       update_JxW_values,
       [&](const FEValues<dim> &values) {
         for (const unsigned int q : values.quadrature_point_indices())
-          result.solid_volume += values.JxW(q);
+          result.solid_volume += measure.JxW(values, q);
       },
       [&](const NonMatching::FEImmersedSurfaceValues<dim> &values) {
         for (const unsigned int q : values.quadrature_point_indices())
-          result.interface_area += values.JxW(q);
+          result.interface_area += measure.JxW(values, q);
       });
     const MPI_Comm comm = level_set.dof_handler().get_communicator();
     result.solid_volume   = Utilities::MPI::sum(result.solid_volume, comm);
@@ -151,10 +158,13 @@ namespace levelsinter::interface_measures
   {
     // The window's cells minus the solid in them; cells fully in the
     // atmosphere are skipped by the cut integration but counted here.
-    double cells = 0, solid = 0;
+    // A box cell's measure is its area times the weight at its centre
+    // (the weight is linear in r).
+    double              cells = 0, solid = 0;
+    const SceneMeasure &measure = level_set.measure();
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && window.point_inside(cell->center()))
-        cells += cell->measure();
+        cells += cell->measure() * measure.weight(cell->center());
     integrate_cut<dim>(
       level_set,
       update_JxW_values,
@@ -162,7 +172,7 @@ namespace levelsinter::interface_measures
       [&](const FEValues<dim> &values) {
         if (window.point_inside(values.get_cell()->center()))
           for (const unsigned int q : values.quadrature_point_indices())
-            solid += values.JxW(q);
+            solid += measure.JxW(values, q);
       },
       [](const NonMatching::FEImmersedSurfaceValues<dim> &) {});
     return Utilities::MPI::sum(cells - solid,
@@ -186,7 +196,7 @@ namespace levelsinter::interface_measures
         for (const unsigned int q : values.quadrature_point_indices())
           result += integrand(values.quadrature_point(q),
                               values.normal_vector(q)) *
-                    values.JxW(q);
+                    level_set.measure().JxW(values, q);
       });
     return Utilities::MPI::sum(result,
                                level_set.dof_handler().get_communicator());
@@ -208,7 +218,8 @@ namespace levelsinter::interface_measures
           {
             const double d =
               std::abs(exact_signed_distance.value(values.quadrature_point(q)));
-            result.symmetric_difference += d * values.JxW(q);
+            result.symmetric_difference +=
+              d * level_set.measure().JxW(values, q);
             result.max_distance = std::max(result.max_distance, d);
           }
       });
@@ -363,7 +374,8 @@ namespace levelsinter::interface_measures
     const QGauss<dim> quadrature(2);
     FEValues<dim>     values(level_set.fe(),
                          quadrature,
-                         update_values | update_gradients | update_JxW_values);
+                         update_values | update_gradients |
+                           update_JxW_values | update_quadrature_points);
     std::vector<double>         alpha(quadrature.size());
     std::vector<Tensor<1, dim>> grad(quadrature.size());
     double max_error = 0, sum_sq = 0, measure = 0;
@@ -379,8 +391,9 @@ namespace levelsinter::interface_measures
                 const double e =
                   grad[q].norm() - filter.gradient_norm_target(alpha[q]);
                 max_error = std::max(max_error, std::abs(e));
-                sum_sq += e * e * values.JxW(q);
-                measure += values.JxW(q);
+                const double JxW = level_set.measure().JxW(values, q);
+                sum_sq += e * e * JxW;
+                measure += JxW;
               }
         }
     const MPI_Comm comm = level_set.dof_handler().get_communicator();

@@ -11,8 +11,10 @@ namespace levelsinter
 {
   template <int dim>
   LevelSetField<dim>::LevelSetField(
-    const parallel::distributed::Triangulation<dim> &tria)
-    : finite_element(1)
+    const parallel::distributed::Triangulation<dim> &tria,
+    const SceneMeasure                              &measure)
+    : scene_measure(measure)
+    , finite_element(1)
     , dofs(tria)
   {}
 

@@ -113,7 +113,7 @@ namespace levelsinter
           for (const unsigned int q : stokes_values.quadrature_point_indices())
             if (alpha_q[q] < 0)
               {
-                const double w = stokes_values.JxW(q);
+                const double w = level_set.measure().JxW(stokes_values, q);
                 for (unsigned int m = 0; m < n; ++m)
                   phi[m] = motions.mode<dim>(m,
                                              stokes_values.quadrature_point(q),

@@ -16,7 +16,8 @@ namespace levelsinter
 
   template <int dim>
   void
-  StokesCellData<dim>::reinit(const FEValues<dim> &values)
+  StokesCellData<dim>::reinit(const FEValues<dim>  &values,
+                              const SceneMeasure   &measure)
   {
     n_q = values.n_quadrature_points;
     // Grown, never shrunk: the rule alternates between 2 and 3 points per
@@ -24,6 +25,7 @@ namespace levelsinter
     if (JxW.size() < n_q)
       {
         JxW.resize(n_q);
+        inverse_radius.resize(n_q);
         law.resize(n_q);
         tau.resize(n_q);
         history.resize(n_q);
@@ -33,7 +35,8 @@ namespace levelsinter
       }
     for (unsigned int k = 0; k < n_q; ++k)
       {
-        JxW[k] = values.JxW(k);
+        JxW[k]            = measure.JxW(values, k);
+        inverse_radius[k] = measure.inverse_radius(values.quadrature_point(k));
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
             value[k][i]    = values.shape_value_component(i, k, component[i]);
@@ -66,22 +69,25 @@ namespace levelsinter
         const double             a1_2 = 0.5 * law.a1 * JxW;
         for (unsigned int a = 0; a < velocity_dofs.size(); ++a)
           {
-            const unsigned int i  = velocity_dofs[a];
-            const unsigned int ci = data.component[i];
+            const unsigned int i      = velocity_dofs[a];
+            const unsigned int ci     = data.component[i];
+            const double       hoop_i = data.hoop(k, i);
             // eps(w_i) : eps(w_j) = (delta_{c_i c_j} g_i . g_j
-            //                        + g_i[c_j] g_j[c_i]) / 2.
+            //                        + g_i[c_j] g_j[c_i]) / 2
+            //                       + e_thth(w_i) e_thth(w_j).
             for (unsigned int b = a; b < velocity_dofs.size(); ++b)
               {
                 const unsigned int j  = velocity_dofs[b];
                 const unsigned int cj = data.component[j];
-                double eps_eps = g[i][cj] * g[j][ci];
+                double eps_eps =
+                  g[i][cj] * g[j][ci] + 2 * hoop_i * data.hoop(k, j);
                 if (ci == cj)
                   eps_eps += g[i] * g[j];
                 cell.matrix(i, j) += a1_2 * eps_eps;
               }
             // a2 weighs p in the momentum equation only (the elastic law
-            // has a2 != 1): both entries here.
-            const double div_i = g[i][ci] * JxW;
+            // has a2 != 1): both entries here. div w = d_c w_c + w_r / r.
+            const double div_i = (g[i][ci] + hoop_i) * JxW;
             for (const unsigned int p : pressure_dofs)
               {
                 cell.matrix(i, p) -= law.a2 * div_i * q[p];
@@ -146,11 +152,15 @@ namespace levelsinter
   {
     for (const auto &point : data.surface)
       {
+        // The surface divergence of w: P : grad w, plus w_r / r on a body
+        // of revolution (P_thth = 1).
         const Tensor<2, dim> projector = point.projector();
         for (unsigned int i = 0; i < data.n_dofs; ++i)
           if (!data.is_pressure(i))
-            cell.rhs(i) -=
-              gamma * scalar_product(projector, point.grad_w[i]) * point.dS;
+            cell.rhs(i) -= gamma *
+                           (scalar_product(projector, point.grad_w[i]) +
+                            point.hoop[i]) *
+                           point.dS;
       }
   }
 
@@ -181,7 +191,8 @@ namespace levelsinter
     for (const auto &point : data.surface)
       {
         const Tensor<2, dim> projector = point.projector();
-        // grad_Gamma w = (grad w) P; the upper triangle suffices.
+        // grad_Gamma w = (grad w) P, plus the hoop entry w_r / r on a
+        // body of revolution; the upper triangle suffices.
         for (unsigned int i = 0; i < data.n_dofs; ++i)
           if (!data.is_pressure(i))
             {
@@ -190,7 +201,8 @@ namespace levelsinter
                 if (!data.is_pressure(j))
                   cell.matrix(i, j) +=
                     weight *
-                    scalar_product(surface_i, point.grad_w[j] * projector) *
+                    (scalar_product(surface_i, point.grad_w[j] * projector) +
+                     point.hoop[i] * point.hoop[j]) *
                     point.dS;
             }
       }

@@ -272,8 +272,9 @@ namespace levelsinter
     const QGauss<dim>     quadrature(3);
     const QGauss<dim>     uniform_quadrature(2);
     const QGauss<dim - 1> face_quadrature(2);
-    const UpdateFlags     flags =
-      update_values | update_gradients | update_JxW_values;
+    const UpdateFlags     flags = update_values | update_gradients |
+                              update_JxW_values | update_quadrature_points;
+    const SceneMeasure   &measure = alpha.measure();
     FEValues<dim> transition_values(finite_element, quadrature, flags);
     FEValues<dim> uniform_values(finite_element, uniform_quadrature, flags);
     FEValues<dim> transition_level_set_values(alpha.fe(),
@@ -287,7 +288,8 @@ namespace levelsinter
     FEFaceValues<dim> face_values(finite_element,
                                   face_quadrature,
                                   update_values | update_normal_vectors |
-                                    update_JxW_values);
+                                    update_JxW_values |
+                                    update_quadrature_points);
 
     std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
     std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
@@ -299,8 +301,9 @@ namespace levelsinter
           alpha.dof_handler(), alpha.alpha());
         classifier->reclassify();
         NonMatching::RegionUpdateFlags flags;
-        flags.surface =
-          update_gradients | update_JxW_values | update_normal_vectors;
+        flags.surface = update_values | update_gradients |
+                        update_JxW_values | update_normal_vectors |
+                        update_quadrature_points;
         // 2 points per direction: Q1 test-function gradients vary
         // linearly in a cell, and the geometric error of the Q1 zero level
         // set (O(h^2)) dominates the quadrature error.
@@ -391,7 +394,7 @@ namespace levelsinter
           const unsigned int n_q = values.get_quadrature().size();
           values.reinit(cell);
           level_set_values.reinit(ls_cell);
-          data.reinit(values);
+          data.reinit(values, measure);
           data.h = h;
           alpha_q.resize(n_q);
           grad_alpha_q.resize(n_q);
@@ -449,10 +452,14 @@ namespace levelsinter
                 if (weight > 0)
                   {
                     typename StokesCellData<dim>::SurfacePoint point{
-                      grad_alpha_q[k] / norm, weight, {}};
+                      grad_alpha_q[k] / norm, weight, {}, {}};
                     point.grad_w.resize(n);
+                    point.hoop.resize(n);
                     for (unsigned int i = 0; i < n; ++i)
-                      point.grad_w[i] = data.velocity_gradient(k, i);
+                      {
+                        point.grad_w[i] = data.velocity_gradient(k, i);
+                        point.hoop[i]   = data.hoop(k, i);
+                      }
                     data.surface.push_back(std::move(point));
                   }
               }
@@ -464,10 +471,20 @@ namespace levelsinter
                      surface->quadrature_point_indices())
                   {
                     typename StokesCellData<dim>::SurfacePoint point{
-                      surface->normal_vector(k), surface->JxW(k), {}};
+                      surface->normal_vector(k),
+                      measure.JxW(*surface, k),
+                      {},
+                      {}};
+                    const double inverse_radius =
+                      measure.inverse_radius(surface->quadrature_point(k));
                     point.grad_w.resize(n);
+                    point.hoop.resize(n);
                     for (unsigned int i = 0; i < n; ++i)
-                      point.grad_w[i] = (*surface)[velocity].gradient(i, k);
+                      {
+                        point.grad_w[i] = (*surface)[velocity].gradient(i, k);
+                        point.hoop[i] =
+                          (*surface)[velocity].value(i, k)[0] * inverse_radius;
+                      }
                     data.surface.push_back(std::move(point));
                   }
             }
@@ -486,7 +503,9 @@ namespace levelsinter
                        face_values.quadrature_point_indices())
                     {
                       typename StokesCellData<dim>::FacePoint point{
-                        face_values.normal_vector(k), face_values.JxW(k), {}};
+                        face_values.normal_vector(k),
+                        measure.JxW(face_values, k),
+                        {}};
                       point.w.resize(n);
                       for (unsigned int i = 0; i < n; ++i)
                         point.w[i] = face_values[velocity].value(i, k);

@@ -291,7 +291,8 @@ namespace levelsinter
     // offset of a sphere leaves unchanged, grew as well.
     const auto   start    = measures_at_step_start;
     const auto   end      = interface_measures::volume_and_area(alpha);
-    const double exponent = (dim - 1.) / dim;
+    const double body_dim = alpha.measure().template body_dimension<dim>();
+    const double exponent = (body_dim - 1) / body_dim;
     const auto   scale_free = [exponent](const auto &m) {
       return m.interface_area / std::pow(m.solid_volume, exponent);
     };

@@ -235,6 +235,33 @@ namespace levelsinter
                      "other's t*)");
       }
 
+    // An axisymmetric scene has the hoop terms in the viscous-flow forms
+    // and the 2 pi r measure everywhere; the mechanisms without them are
+    // refused rather than run as planar.
+    if (geometry.axisymmetric)
+      {
+        if (volume_diffusion.enabled)
+          fail_entry("Volume diffusion/Enabled",
+                     "is not available with 'Geometry/Axisymmetric = true' "
+                     "yet; run the scene in 3D");
+        if (phase_law.law != PhaseLawParameters::Law::newtonian)
+          fail_entry("Phase law/Law",
+                     "must be 'newtonian' with 'Geometry/Axisymmetric = "
+                     "true' (the other laws have no hoop terms yet)");
+        if (viscous_flow.enabled &&
+            viscous_flow.surface_tension_form ==
+              ViscousFlowParameters::SurfaceTensionForm::csf_curvature)
+          fail_entry("Viscous flow/Surface tension form",
+                     "'csf-curvature' is not available with "
+                     "'Geometry/Axisymmetric = true' (its nodal curvature "
+                     "lacks the azimuthal n_r / r); use 'sharp' or 'csf'");
+        // The axis is a mirror of the half plane: v_r = 0 there, and the
+        // refinement and the rigid modes treat it as a symmetry plane.
+        auto &planes = domain.symmetry_planes;
+        if (std::find(planes.begin(), planes.end(), 0) == planes.end())
+          planes.insert(planes.begin(), 0);
+      }
+
     // A viscoelastic melt flows: its polymer stress is part of the viscous
     // flow problem.
     if (phase_law.is_viscoelastic() && !viscous_flow.enabled)

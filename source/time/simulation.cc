@@ -97,7 +97,7 @@ namespace levelsinter
     , tria(comm,
            Triangulation<dim>::limit_level_difference_at_vertices)
     , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
-    , alpha(tria)
+    , alpha(tria, SceneMeasure(scene.geometry.axisymmetric))
     , velocity(tria)
     , correction_velocity(tria)
     , mechanisms(make_scene_mechanisms<dim>(scene, timer_output))

@@ -70,10 +70,14 @@ namespace levelsinter
   class PerturbedBall : public Function<dim>
   {
   public:
+    /** @p revolution: a 2D scene that stands for a body of revolution
+     * about x = 0 (Geometry/Axisymmetric) gets the 3D shape, P_n of the
+     * angle from the axis. */
     PerturbedBall(const Point<dim>  &centre,
                   const double       radius,
                   const double       amplitude,
-                  const unsigned int mode);
+                  const unsigned int mode,
+                  const bool         revolution = false);
 
     double
     value(const Point<dim> &p, const unsigned int component = 0) const override;
@@ -90,6 +94,7 @@ namespace levelsinter
     double       radius;
     double       delta;
     unsigned int mode;
+    bool         revolution;
   };
 
   /**

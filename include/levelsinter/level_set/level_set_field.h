@@ -12,6 +12,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <levelsinter/level_set/scene_measure.h>
+
 #include <cstdint>
 
 namespace levelsinter
@@ -33,7 +35,11 @@ namespace levelsinter
   public:
     using Vector = TrilinosWrappers::MPI::Vector;
 
-    explicit LevelSetField(const parallel::distributed::Triangulation<dim> &tria);
+    /** @p measure: the measure of the scene's volumes and areas (an
+     * axisymmetric scene's are those of the body of revolution). */
+    explicit LevelSetField(
+      const parallel::distributed::Triangulation<dim> &tria,
+      const SceneMeasure                              &measure = SceneMeasure());
     ~LevelSetField();
 
     /** Distribute DoFs and size the vectors for the current mesh. */
@@ -100,6 +106,13 @@ namespace levelsinter
       return finite_element;
     }
 
+    /** The measure every integral over this field's regions uses. */
+    const SceneMeasure &
+    measure() const
+    {
+      return scene_measure;
+    }
+
     /**
      * A number that identifies the current values of alpha among all
      * states of all level-set fields of the run: a measurement of one
@@ -112,6 +125,7 @@ namespace levelsinter
     }
 
   private:
+    SceneMeasure              scene_measure;
     FE_Q<dim>                 finite_element;
     DoFHandler<dim>           dofs;
     AffineConstraints<double> hanging_node_constraints;

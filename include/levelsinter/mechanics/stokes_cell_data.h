@@ -8,6 +8,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <levelsinter/level_set/scene_measure.h>
 #include <levelsinter/mechanics/phase_law.h>
 
 #include <vector>
@@ -22,6 +23,12 @@ namespace levelsinter
    * the volume quadrature points, the points of the surface measure and the
    * points on free box faces. TwoPhaseStokes fills it per cell; each
    * assembler adds one term of Eq. 93-94 to a CellContribution.
+   *
+   * Weights are in the scene's measure (SceneMeasure): on an axisymmetric
+   * scene JxW and dS carry 2 pi r, and the hoop strain e_thth(w) = w_r / r
+   * of each velocity shape function is at hand (hoop(), SurfacePoint::hoop;
+   * zero on a plane scene), so each assembler writes its form once for
+   * both (doc/numerics.md, "Axisymmetric scenes").
    */
   template <int dim>
   struct StokesCellData
@@ -33,6 +40,8 @@ namespace levelsinter
       Tensor<1, dim>              normal;
       double                      dS = 0;
       std::vector<Tensor<2, dim>> grad_w;
+      // w_r / r per shape function (0 off the axisymmetric case).
+      std::vector<double> hoop;
 
       /** The tangential projector I - n (x) n. */
       Tensor<2, dim>
@@ -55,10 +64,11 @@ namespace levelsinter
      * component of shape function i (dim: pressure). */
     explicit StokesCellData(const std::vector<unsigned int> &component);
 
-    /** Shape data from @p values (reinit on the cell); resets the surface
-     * and face points. */
+    /** Shape data from @p values (reinit on the cell, with its
+     * quadrature points), weights in @p measure; resets the surface and
+     * face points. */
     void
-    reinit(const FEValues<dim> &values);
+    reinit(const FEValues<dim> &values, const SceneMeasure &measure);
 
     bool
     is_pressure(const unsigned int i) const
@@ -77,6 +87,8 @@ namespace levelsinter
     // Per quadrature point (sized for the largest rule seen: entries from
     // n_q on are stale).
     std::vector<double>            JxW;
+    // 1 / r of the hoop terms (0 off the axisymmetric case).
+    std::vector<double>            inverse_radius;
     std::vector<PhaseCoefficients> law;
     std::vector<double>            tau; // ASGS, Eq. 99
     std::vector<HistoryTerms<dim>> history;
@@ -100,6 +112,15 @@ namespace levelsinter
       if (!is_pressure(i))
         grad_w[component[i]] = gradient[k][i];
       return grad_w;
+    }
+
+    /** The hoop strain w_r / r of shape function @p i at point @p k (0
+     * for a pressure shape function, the axial component and on a plane
+     * scene). */
+    double
+    hoop(const unsigned int k, const unsigned int i) const
+    {
+      return component[i] == 0 ? value[k][i] * inverse_radius[k] : 0.;
     }
 
     std::vector<SurfacePoint> surface;

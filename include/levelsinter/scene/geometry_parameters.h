@@ -39,6 +39,9 @@ namespace levelsinter
           const DomainParameters &domain);
 
     Shape shape = Shape::particles;
+    // A 2D scene that stands for a body of revolution about x = 0 (x = r,
+    // y = z; SceneMeasure).
+    bool axisymmetric = false;
     // Inline particles and the particle file are merged: x, y[, z], r.
     std::vector<std::vector<double>> particles;
     std::string                      particle_file;
