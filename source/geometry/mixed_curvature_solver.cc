@@ -187,7 +187,8 @@ namespace levelsinter
     TimerOutput::Scope scope(timer, "curvature assembly");
     normals = levelsinter::nodal_normals(level_set,
                                          filter,
-                                         settings.normals_from_distance);
+                                         settings.normals_from_distance,
+                                         settings.symmetry_boundaries);
     for (auto *m : {&kk, &kv, &vk, &vv})
       *m = 0;
     rhs = 0;

@@ -27,7 +27,11 @@ namespace levelsinter
                                            scene.phase_law));
     if (scene.surface_diffusion.enabled)
       mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
-        scene.surface_diffusion, scene.seconds_per_time_unit(), filter, timer));
+        scene.surface_diffusion,
+        scene.seconds_per_time_unit(),
+        scene.domain.symmetry_planes,
+        filter,
+        timer));
     // SceneParameters refuses it with viscous flow and without the
     // elastic-solid law. With surface diffusion as well (Eq. 118,
     // Algorithm 4) the time loop adds both velocities, transports once and
@@ -44,7 +48,8 @@ namespace levelsinter
         timer));
     // Last: it corrects the volume whatever the others moved.
     if (scene.volume_correction.enabled)
-      mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(filter));
+      mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(
+        scene.domain.symmetry_planes, filter));
     return mechanisms;
   }
 

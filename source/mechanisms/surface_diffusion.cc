@@ -6,6 +6,7 @@ namespace levelsinter
   SurfaceDiffusion<dim>::SurfaceDiffusion(
     const SceneParameters::SurfaceDiffusion &parameters,
     const double                             seconds_per_time_unit,
+    const std::vector<types::boundary_id>   &symmetry_planes,
     const LevelSetFilter                    &filter,
     TimerOutput                             &timer)
     : mobility(parameters.surface_mobility() * seconds_per_time_unit)
@@ -14,7 +15,9 @@ namespace levelsinter
               parameters.linear_solver ==
                 SurfaceDiffusionParameters::LinearSolver::direct,
               parameters.solver_tolerance,
-              1000},
+              1000,
+              false,
+              symmetry_planes},
              timer)
     , timer(timer)
   {}

@@ -83,6 +83,7 @@ namespace levelsinter
             curvature_settings.coupled               = false;
             curvature_settings.tolerance             = 1e-10;
             curvature_settings.normals_from_distance = true;
+            curvature_settings.symmetry_boundaries   = symmetry_planes;
             curvature_solver = std::make_unique<MixedCurvatureSolver<dim>>(
               filter, curvature_settings, timer);
             curvature_solver->setup(alpha);

@@ -5,8 +5,11 @@
 namespace levelsinter
 {
   template <int dim>
-  VolumeCorrection<dim>::VolumeCorrection(const LevelSetFilter &filter)
-    : filter(filter)
+  VolumeCorrection<dim>::VolumeCorrection(
+    const std::vector<types::boundary_id> &symmetry_planes,
+    const LevelSetFilter                  &filter)
+    : symmetry_planes(symmetry_planes)
+    , filter(filter)
   {}
 
   template <int dim>
@@ -36,7 +39,7 @@ namespace levelsinter
               (dt * measures.interface_area);
     if (speed == 0)
       return false;
-    const auto normals = nodal_normals(alpha, filter, true);
+    const auto normals = nodal_normals(alpha, filter, true, symmetry_planes);
     velocity.add_vertex_values(alpha.dof_handler(),
                                [&](const auto &cell, const unsigned int v) {
       const auto     i = cell->vertex_dof_index(v, 0);

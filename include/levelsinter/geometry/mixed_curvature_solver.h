@@ -11,6 +11,7 @@
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <array>
+#include <vector>
 
 namespace levelsinter
 {
@@ -57,6 +58,10 @@ namespace levelsinter
       // alpha (nodal_normals()): kappa then converges at second order with
       // E a fixed number of cells.
       bool normals_from_distance = false;
+      // Box faces that are symmetry planes (`Domain/Symmetry planes`): the
+      // nodal normals there are mirrored (nodal_normals()). Without it a
+      // neck on the plane sees one-sided normals and stops growing.
+      std::vector<types::boundary_id> symmetry_boundaries;
     };
 
     MixedCurvatureSolver(const LevelSetFilter &filter,

@@ -22,6 +22,7 @@ namespace levelsinter
   public:
     SurfaceDiffusion(const SceneParameters::SurfaceDiffusion &parameters,
                      const double         seconds_per_time_unit,
+                     const std::vector<types::boundary_id> &symmetry_planes,
                      const LevelSetFilter &filter,
                      TimerOutput          &timer);
 

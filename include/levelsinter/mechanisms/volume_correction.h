@@ -25,7 +25,8 @@ namespace levelsinter
   class VolumeCorrection : public Mechanism<dim>
   {
   public:
-    explicit VolumeCorrection(const LevelSetFilter &filter);
+    VolumeCorrection(const std::vector<types::boundary_id> &symmetry_planes,
+                     const LevelSetFilter                  &filter);
 
     std::string
     name() const override
@@ -55,7 +56,9 @@ namespace levelsinter
     metric_values() const override;
 
   private:
-    const LevelSetFilter filter;
+    // Mirrored normals on these faces (nodal_normals()).
+    const std::vector<types::boundary_id> symmetry_planes;
+    const LevelSetFilter                  filter;
     double               initial_volume = -1;
     double               speed          = 0;
   };
