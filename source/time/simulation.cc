@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -527,9 +528,31 @@ namespace levelsinter
               row.push_back(neck);
           }
         const bool has_neck = row.size() > columns_before_neck;
+        // An equal pair: the curvature of its neck and the mechanisms'
+        // fields where the neck meets the interface (the viscoelastic
+        // seed's Figs. 8, 11, 13), from a fit over a few finest cells.
+        const bool has_neck_shape = has_neck && particles.size() == 2 &&
+                                    particles[0][dim] == particles[1][dim];
+        std::optional<neck_measures::NeckShape<dim>> neck_shape;
+        if (has_neck_shape)
+          {
+            Point<dim> c1, c2;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                c1[d] = particles[0][d];
+                c2[d] = particles[1][d];
+              }
+            neck_shape = neck_measures::neck_shape(alpha, c1, c2, h_min);
+            row.push_back(neck_shape->curvature);
+          }
         for (const auto &mechanism : mechanisms)
           for (const double value : mechanism->metric_values())
             row.push_back(value);
+        if (neck_shape)
+          for (const auto &mechanism : mechanisms)
+            for (const double value :
+                 mechanism->point_metric_values(alpha, neck_shape->point))
+              row.push_back(value);
         row.insert(row.end(), packing_row.begin(), packing_row.end());
         // Densification: the approach of the particle centres.
         if (packing_analysis &&
@@ -561,9 +584,15 @@ namespace levelsinter
               columns.push_back("under_resolved_curvature_cells");
             if (has_neck)
               columns.push_back("neck_radius");
+            if (has_neck_shape)
+              columns.push_back("neck_curvature");
             for (const auto &mechanism : mechanisms)
               for (const auto &name : mechanism->metric_names())
                 columns.push_back(name);
+            if (has_neck_shape)
+              for (const auto &mechanism : mechanisms)
+                for (const auto &name : mechanism->point_metric_names())
+                  columns.push_back("neck_" + name);
             if (packing_analysis)
               for (const auto &name : packing_analysis->column_names())
                 columns.push_back(name);
@@ -653,6 +682,8 @@ namespace levelsinter
           for (auto &mechanism : mechanisms)
             mechanism->check_step(alpha);
           last_iterations += correct_step(dt);
+          for (auto &mechanism : mechanisms)
+            mechanism->accept_step(alpha);
           return dt;
         }
       catch (const std::exception &failure)
