@@ -116,19 +116,51 @@ bad_input_test(viscoelastic_zero_relaxation_time "Phase law/Relaxation time"
   --set "Phase law/Relaxation time=0"
   ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
 
-# The De sweep behind doc/validation.md ("Viscoelastic particles in viscous
-# flow"): the scene to t = 0.1 as a Newtonian melt of viscosity 1 and at
-# De = 0.1 and 1 (metrics.csv in the build's tests/ve_sweep_*).
-function(add_viscoelastic_sweep_run name)
-  add_test(NAME study_viscoelastic_cylinders_${name}_2d
-    COMMAND $<TARGET_FILE:levelsinter> --overwrite --set "Time/End time=0.1"
-      --set "Output/Field formats=none" --set "Output/Metrics interval=1"
-      --set "Output/Directory=ve_sweep_${name}" ${ARGN}
-      ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
-  set_tests_properties(study_viscoelastic_cylinders_${name}_2d PROPERTIES
-    LABELS validation-long PASS_REGULAR_EXPRESSION "done:")
+# The De sweep behind doc/validation.md ("The De sweep"): the seed's
+# geometry (R_n rounding) to t = 0.5 at R/h = 40 (the scene's band and
+# filter, 9.6 and 12.8 cells) as a Newtonian melt of viscosity 1 and as
+# Giesekus melts (alpha = 0.1, beta = 0.01) at De = 0.01, 0.1, 0.5, 1;
+# De = 0.1 also at R/h = 20 and with half the steps (relative step, CFL and
+# first step halved) for the convergence in h and dt. Neck radius, neck
+# curvature, tr c at the neck against t in CSV.levelN.csv.
+function(add_viscoelastic_sweep_run name levels)
+  add_test(NAME study_viscoelastic_sweep_${name}_2d
+    COMMAND ${VISCOUS} neck-history
+      ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm
+      ${levels} --band-cells 9.6 --filter-cells 12.8
+      --set "Time/End time=0.5" ${ARGN}
+      --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/viscoelastic_sweep_${name}_2d.csv)
+  set_tests_properties(study_viscoelastic_sweep_${name}_2d PROPERTIES
+    LABELS validation-long)
 endfunction()
-add_viscoelastic_sweep_run(newtonian --set "Phase law/Law=newtonian"
+add_viscoelastic_sweep_run(newtonian 6 --set "Phase law/Law=newtonian"
   --set "Viscous flow/Solid viscosity=1")
-add_viscoelastic_sweep_run(de0.1 --set "Phase law/Relaxation time=0.1")
-add_viscoelastic_sweep_run(de1)
+add_viscoelastic_sweep_run(de0.01 6 --set "Phase law/Relaxation time=0.01")
+add_viscoelastic_sweep_run(de0.1 5,6 --set "Phase law/Relaxation time=0.1")
+add_viscoelastic_sweep_run(de0.1_dt_half 6 --set "Phase law/Relaxation time=0.1"
+  --set "Time/Time step=5e-4" --set "Time/Relative time step=0.025"
+  --set "Time/CFL number=0.25")
+add_viscoelastic_sweep_run(de0.5 6 --set "Phase law/Relaxation time=0.5")
+add_viscoelastic_sweep_run(de1 6)
+
+# --- The viscoelastic seed's own validation (Sect. 5, Eq. 44) -------------
+# Hopper's cylinders with R = 1/sqrt(2), y_n = 0.075 from Hopper's exact
+# shape, to t = 3.8375 (parameter_files/hopper_seed_validation_2d.prm); the
+# Eq. 44 error over 23 equally spaced samples (column sampled_neck_error),
+# as a Newtonian melt and as a Giesekus melt in the Newtonian limit
+# (beta = 0.01, lambda = 1e-4: De = lambda gamma / (eta_0 R) = 1.4e-4),
+# R/h = 19, 38, 75 (doc/validation.md, "The seed's validation").
+set(SEED_HOPPER ${CMAKE_SOURCE_DIR}/parameter_files/hopper_seed_validation_2d.prm)
+set(GIESEKUS_LIMIT --set "Phase law/Law=giesekus"
+  --set "Viscous flow/Solid viscosity=0.01"
+  --set "Phase law/Polymer viscosity=0.99"
+  --set "Phase law/Relaxation time=1e-4")
+add_test(NAME study_viscoelastic_seed_hopper_newtonian_2d COMMAND ${VISCOUS}
+  hopper ${SEED_HOPPER} 5,6,7 --samples 23
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/seed_hopper_newtonian_2d.csv)
+add_test(NAME study_viscoelastic_seed_hopper_giesekus_2d COMMAND ${VISCOUS}
+  hopper ${SEED_HOPPER} 5,6,7 --samples 23 ${GIESEKUS_LIMIT}
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/seed_hopper_giesekus_2d.csv)
+set_tests_properties(study_viscoelastic_seed_hopper_newtonian_2d
+  study_viscoelastic_seed_hopper_giesekus_2d PROPERTIES
+  LABELS validation-long RESOURCE_LOCK viscous_hopper_output)
