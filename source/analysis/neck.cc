@@ -227,7 +227,8 @@ namespace levelsinter::neck_measures
     for (unsigned int k = 0; k < rays.size(); ++k)
       if (std::isfinite(exits[k]))
         {
-          shape.point = rays[k].origin + exits[k] * rays[k].direction;
+          shape.point   = rays[k].origin + exits[k] * rays[k].direction;
+          shape.outward = rays[k].direction;
           break;
         }
     // r = a + b x + c x^2 over x = k spacing, k = -n..n: the odd and even

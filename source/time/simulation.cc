@@ -528,9 +528,11 @@ namespace levelsinter
               row.push_back(neck);
           }
         const bool has_neck = row.size() > columns_before_neck;
-        // An equal pair: the curvature of its neck and the mechanisms'
-        // fields where the neck meets the interface (the viscoelastic
-        // seed's Figs. 8, 11, 13), from a fit over a few finest cells.
+        // An equal pair: the curvature of its neck (from a fit over a few
+        // finest cells) and the mechanisms' fields at the neck (the
+        // viscoelastic seed's Figs. 8, 11, 13), read one finest cell inside
+        // the interface: on it the Q1 fields mix the particle's nodes with
+        // the atmosphere's.
         const bool has_neck_shape = has_neck && particles.size() == 2 &&
                                     particles[0][dim] == particles[1][dim];
         std::optional<neck_measures::NeckShape<dim>> neck_shape;
@@ -551,7 +553,8 @@ namespace levelsinter
         if (neck_shape)
           for (const auto &mechanism : mechanisms)
             for (const double value :
-                 mechanism->point_metric_values(alpha, neck_shape->point))
+                 mechanism->point_metric_values(
+                   alpha, neck_shape->point - h_min * neck_shape->outward))
               row.push_back(value);
         row.insert(row.end(), packing_row.begin(), packing_row.end());
         // Densification: the approach of the particle centres.

@@ -31,8 +31,10 @@ namespace levelsinter
     struct NeckShape
     {
       // On the mid-plane, on the first of neck_radius()'s rays that meets
-      // the interface (the mid-point if none does).
-      Point<dim> point;
+      // the interface (the mid-point if none does), and that ray's
+      // direction: out of the solid.
+      Point<dim>     point;
+      Tensor<1, dim> outward;
       // The viscoelastic seed's neck curvature kappa = 1/R1 + 1/R2 (Eq.
       // 45-47), in its sign: -div n, positive where the neck is concave;
       // the hoop term 1/R2 about the line of centres in 3D only.

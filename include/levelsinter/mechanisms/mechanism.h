@@ -138,10 +138,10 @@ namespace levelsinter
     }
 
     /**
-     * Fields worth reading at the point where a pair's neck meets the
-     * interface (metrics.csv columns "neck_" + name, e.g. the polymer
-     * stretch of a viscoelastic melt), and their values at @p point after
-     * the last step (collective: every rank calls it with the same point).
+     * Fields worth reading at a pair's neck (metrics.csv columns "neck_" +
+     * name, e.g. the polymer stretch of a viscoelastic melt), and their
+     * values at @p point after the last step (collective: every rank calls
+     * it with the same point).
      */
     virtual std::vector<std::string>
     point_metric_names() const
