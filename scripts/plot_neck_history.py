@@ -27,7 +27,8 @@ PANELS = [
     ("neck_trace_c", "tr c at the neck"),
 ]
 fig, axes = plt.subplots(1, 3, figsize=(14, 4))
-for argument in arguments:
+colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+for n, argument in enumerate(arguments):
     label, _, name = argument.rpartition("=")
     reader = csv.DictReader(open(name))
     rows = [r for r in reader if float(r["time"]) <= t_max]
@@ -36,7 +37,8 @@ for argument in arguments:
         values = [float(r[column]) for r in rows]
         if all(math.isnan(v) for v in values):
             continue
-        ax.plot(t, values, label=label or name)
+        # One colour per file in every panel (a Newtonian run has no tr c).
+        ax.plot(t, values, label=label or name, color=colours[n % len(colours)])
 for ax, (_, title) in zip(axes, PANELS):
     ax.set_xlabel("t gamma / (eta_0 R)")
     ax.set_title(title)

@@ -223,12 +223,15 @@ namespace levelsinter::neck_measures
     const std::vector<double> radii = cross_section_radii(caster, sections);
 
     NeckShape<dim> shape;
-    shape.point = c1 + 0.5 * (c2 - c1);
+    shape.point       = c1 + 0.5 * (c2 - c1);
+    shape.inner_point = shape.point;
     for (unsigned int k = 0; k < rays.size(); ++k)
-      if (std::isfinite(exits[k]))
+      if (std::isfinite(exits[k]) && exits[k] > 0)
         {
-          shape.point   = rays[k].origin + exits[k] * rays[k].direction;
-          shape.outward = rays[k].direction;
+          const auto &[origin, direction] = rays[k];
+          shape.point                     = origin + exits[k] * direction;
+          shape.inner_point =
+            origin + std::max(exits[k] - spacing, exits[k] / 2) * direction;
           break;
         }
     // r = a + b x + c x^2 over x = k spacing, k = -n..n: the odd and even

@@ -553,8 +553,8 @@ namespace levelsinter
         if (neck_shape)
           for (const auto &mechanism : mechanisms)
             for (const double value :
-                 mechanism->point_metric_values(
-                   alpha, neck_shape->point - h_min * neck_shape->outward))
+                 mechanism->point_metric_values(alpha,
+                                                neck_shape->inner_point))
               row.push_back(value);
         row.insert(row.end(), packing_row.begin(), packing_row.end());
         // Densification: the approach of the particle centres.
@@ -692,11 +692,16 @@ namespace levelsinter
       catch (const std::exception &failure)
         {
           if (retry == max_retries)
-            throw std::runtime_error(
-              "the step from t = " + std::to_string(t) + " failed " +
-              std::to_string(max_retries + 1) +
-              " times, the last time with dt = " + std::to_string(dt) +
-              ": " + failure.what());
+            {
+              // Back to the last accepted state, which run() saves.
+              TrilinosWrappers::MPI::Vector copy(start_of_step);
+              alpha.set_from_owned(copy);
+              throw std::runtime_error(
+                "the step from t = " + std::to_string(t) + " failed " +
+                std::to_string(max_retries + 1) +
+                " times, the last time with dt = " + std::to_string(dt) +
+                ": " + failure.what());
+            }
           ++summary.rejected_steps;
           pcout << "step from t = " << t << " with dt = " << dt
                 << " failed; retrying with dt = " << dt / 2 << ". Reason: "
@@ -753,7 +758,23 @@ namespace levelsinter
         // 1.-2. Interface velocity, transport with convective
         //       reinitialisation (Eq. 68), corrections (v^c, Eq. 113-116);
         //       a failed step is retried.
-        const double dt = take_step(t);
+        double dt = 0;
+        try
+          {
+            dt = take_step(t);
+          }
+        catch (const std::exception &failure)
+          {
+            // Stop with a diagnosis and the last accepted state saved
+            // (DESIGN.md Sect. 5), from which the run can go on with
+            // other settings.
+            write_checkpoint(step, t);
+            throw std::runtime_error(
+              std::string(failure.what()) + "; the last accepted state (step " +
+              std::to_string(step) + ", t = " + std::to_string(t) +
+              ") is in a checkpoint: 'levelsinter --resume " +
+              scene.output.directory + "' continues from it");
+          }
         total_iterations += last_iterations;
         t += dt;
         ++step;

@@ -31,10 +31,11 @@ namespace levelsinter
     struct NeckShape
     {
       // On the mid-plane, on the first of neck_radius()'s rays that meets
-      // the interface (the mid-point if none does), and that ray's
-      // direction: out of the solid.
-      Point<dim>     point;
-      Tensor<1, dim> outward;
+      // the interface (the mid-point if none does, or if it lies in the
+      // pore), and on that ray one @p spacing inside the solid (at most
+      // half-way to the mid-point).
+      Point<dim> point;
+      Point<dim> inner_point;
       // The viscoelastic seed's neck curvature kappa = 1/R1 + 1/R2 (Eq.
       // 45-47), in its sign: -div n, positive where the neck is concave;
       // the hoop term 1/R2 about the line of centres in 3D only.
