@@ -210,3 +210,16 @@ bad_input_test(stiff_melt_stop "is in a checkpoint"
   --set "Viscous flow/Capillary time step factor=0"
   --set "Output/Directory=stop"
   ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_cylinders_2d.prm)
+
+# The alpha sweep at De = 1 (the seed's Figs. 16-17) and XPP (q = 2,
+# xi = lambda / lambda_s = 2; Figs. 18-19) at De = 0.1 and 1, to t = 0.2
+# (the largest tr c comes during the start-up), R/h = 40.
+foreach(alpha 0.1875 0.275 0.3625 0.45)
+  add_viscoelastic_sweep_run(alpha${alpha} 6
+    --set "Phase law/Giesekus mobility=${alpha}" --set "Time/End time=0.2")
+endforeach()
+add_viscoelastic_sweep_run(xpp_de0.1 6 --set "Phase law/Law=xpp"
+  --set "Phase law/Relaxation time=0.1"
+  --set "Phase law/XPP stretch relaxation time=0.05" --set "Time/End time=0.2")
+add_viscoelastic_sweep_run(xpp_de1 6 --set "Phase law/Law=xpp"
+  --set "Phase law/XPP stretch relaxation time=0.5" --set "Time/End time=0.2")
