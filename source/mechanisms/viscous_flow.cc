@@ -371,8 +371,8 @@ namespace levelsinter
     // (lambda + dt)) is the positive root of dt^2 + b dt - a eta_s lambda
     // with b = lambda - a eta_0 (eta_0 as lambda -> 0, a eta_s for
     // lambda >> a eta_0). With eta_0 instead, the stiff melt of
-    // doc/validation.md (De = 10, beta = 0.001) took steps 3-10 times too
-    // long near its elastic equilibrium and had 109 of 282 rejected.
+    // doc/validation.md (De = 10, beta = 0.001) took steps 4-10 times this
+    // limit near its elastic equilibrium: 109 rejected in its first 173.
     const double eta_s = parameters.solid_viscosity;
     const double b     = relaxation_time - a * zero_shear_viscosity;
     const double c     = 4 * a * eta_s * relaxation_time;
