@@ -372,7 +372,7 @@ namespace levelsinter
     // with b = lambda - a eta_0 (eta_0 as lambda -> 0, a eta_s for
     // lambda >> a eta_0). With eta_0 instead, the stiff melt of
     // doc/validation.md (De = 10, beta = 0.001) took steps 4-10 times this
-    // limit near its elastic equilibrium: 109 rejected in its first 173.
+    // limit near its elastic equilibrium: 116 rejected in its first 179.
     const double eta_s = parameters.solid_viscosity;
     const double b     = relaxation_time - a * zero_shear_viscosity;
     const double c     = 4 * a * eta_s * relaxation_time;
