@@ -161,8 +161,16 @@ add_test(NAME study_viscoelastic_seed_hopper_newtonian_2d COMMAND ${VISCOUS}
 add_test(NAME study_viscoelastic_seed_hopper_giesekus_2d COMMAND ${VISCOUS}
   hopper ${SEED_HOPPER} 5,6,7 --samples 23 ${GIESEKUS_LIMIT}
   --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/seed_hopper_giesekus_2d.csv)
+# The Newtonian melt with 2 curvature-refinement levels at the neck and the
+# volume correction, band levels 5 and 6 (finest cells R/75 and R/151).
+add_test(NAME study_viscoelastic_seed_hopper_newtonian_k2_vc_2d
+  COMMAND ${VISCOUS} hopper ${SEED_HOPPER} 5,6 --samples 23
+  --set "Mesh refinement/Curvature refinement levels=2"
+  --set "Volume correction/Enabled=true"
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/seed_hopper_newtonian_k2_vc_2d.csv)
 set_tests_properties(study_viscoelastic_seed_hopper_newtonian_2d
-  study_viscoelastic_seed_hopper_giesekus_2d PROPERTIES
+  study_viscoelastic_seed_hopper_giesekus_2d
+  study_viscoelastic_seed_hopper_newtonian_k2_vc_2d PROPERTIES
   LABELS validation-long RESOURCE_LOCK viscous_hopper_output)
 # The same in CI, the Giesekus limit at R/h = 19 to t = 0.5: Eq. 44 over
 # 23 samples measured 0.288 (the early neck, 2 cells wide, grows too
