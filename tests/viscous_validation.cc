@@ -6,6 +6,7 @@
 //   levelsinter_viscous_validation spheres SCENE.prm LEVELS [options]
 //   levelsinter_viscous_validation pore SCENE.prm LEVELS [options]
 //   levelsinter_viscous_validation coalescence SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation neck-history SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
@@ -13,7 +14,9 @@
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C, --max-curvature-error,
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
-// --max-stokes-its, hopper: --max-final-neck-error, --max-rejected,
+// --max-stokes-its, hopper: --samples N (the viscoelastic seed's Eq. 44
+// error over N samples of the run, column sampled_neck_error, limit
+// --max-sampled-neck-error), --max-final-neck-error, --max-rejected,
 // --min-rejected, --min-fine-cells (cells above Maximum level after the
 // first step), --max-fine-cell-distance (the farthest of them from the
 // neck, / R); spheres:
@@ -24,7 +27,8 @@
 // --pore-half-width W (required: a square window of half-width W around
 // the particles' centroid that holds the pore and solid only),
 // --max-closure-time, --max-pore-area-ratio, --max-area-drift; coalescence:
-// --max-roundness-error, --max-area-drift) and for all but the bubble the
+// --max-roundness-error, --max-area-drift; neck-history: --max-trace-c,
+// --max-rejected) and for all but the bubble the
 // band and filter thickness in cells (--band-cells, --filter-cells) and a
 // fixed step --dt-factor F (dt = F eta_s h / gamma, no CFL or capillary
 // limit).
@@ -531,8 +535,47 @@ namespace
           "max-stokes-its");
   }
 
+  // The particles' zero-shear viscosity: eta_s, plus eta_p for a
+  // viscoelastic melt (the viscoelastic seed's eta_0, Sect. 3.4).
+  double
+  zero_shear_viscosity(const SceneParameters &scene)
+  {
+    return scene.viscous_flow.solid_viscosity +
+           (scene.phase_law.is_viscoelastic() ?
+              scene.phase_law.polymer_viscosity :
+              0.);
+  }
+
+  // The viscoelastic seed's error of the neck (Eq. 44): the relative l2
+  // norm over @p n equally spaced samples from t = 0 to the run's end,
+  // the computed neck y(t) interpolated linearly between the rows of
+  // metrics.csv, against exact(t).
+  template <typename Exact>
+  double
+  sampled_neck_error(const std::vector<double> &t,
+                     const std::vector<double> &y,
+                     const unsigned int         n,
+                     const Exact               &exact)
+  {
+    std::vector<double> times;
+    for (unsigned int k = 0; k < n; ++k)
+      times.push_back(t.back() * k / (n - 1.));
+    // values_at() takes the samples after t = 0; the first row is t = 0.
+    std::vector<double> computed = values_at(t, y, times);
+    computed[0]                  = y[0];
+    double error = 0, norm = 0;
+    for (unsigned int k = 0; k < n; ++k)
+      {
+        const double y_exact = exact(times[k]);
+        error += std::pow(computed[k] - y_exact, 2);
+        norm += y_exact * y_exact;
+      }
+    return std::sqrt(error / norm);
+  }
+
   // Two cylinders from Hopper's shape at the scene's initial neck: neck
-  // radius against the exact one, solid-area drift, Stokes iterations.
+  // radius against the exact one, solid-area drift, Stokes iterations;
+  // --samples N adds the seed's Eq. 44 error over N samples of the run.
   void
   hopper(const std::string              &scene_file,
          const std::vector<unsigned int> &levels,
@@ -550,6 +593,11 @@ namespace
                    {"fine_cells_step1",
                     "max_fine_cell_distance",
                     "initial_neck_speed_error"});
+    const auto samples = options.limits.find("samples");
+    const unsigned int n_samples =
+      samples == options.limits.end() ? 0 : samples->second;
+    if (n_samples > 0)
+      columns.emplace_back("sampled_neck_error");
     Table                 table(run_columns(columns), options.csv);
     std::vector<LevelRun> runs;
     for (const unsigned int level : levels)
@@ -579,7 +627,7 @@ namespace
             tau0            = exact.time(m0);
             sim.set_level_set(HopperLevelSet(exact, m0, sim.filter()));
             const double gamma = scene.viscous_flow.surface_tension;
-            const double eta   = scene.viscous_flow.solid_viscosity;
+            const double eta   = zero_shear_viscosity(scene);
             const double exact_speed =
               exact.neck_speed(m0) * gamma / (eta * R);
             const Point<dim> initial_neck(0, exact.neck(m0));
@@ -617,7 +665,7 @@ namespace
         runs.push_back(run);
         const Hopper exact(R);
         const double gamma = run.scene.viscous_flow.surface_tension;
-        const double eta   = run.scene.viscous_flow.solid_viscosity;
+        const double eta   = zero_shear_viscosity(run.scene);
         const auto  &t     = run.metrics.column("time");
         const auto  &neck  = run.metrics.column("neck_radius");
         auto         series = open_series(
@@ -654,6 +702,10 @@ namespace
                       {double(fine_cells_step1),
                        max_fine_cell_distance,
                        initial_neck_speed_error});
+        if (n_samples > 0)
+          values.push_back(sampled_neck_error(t, neck, n_samples, [&](double s) {
+            return exact.neck(exact.m_of_time(tau0 + s * gamma / (eta * R)));
+          }));
         table.add(run_row(level, run, values));
       }
     check("finest max relative neck-radius error", table.finest("max_neck_error"),
@@ -671,6 +723,10 @@ namespace
     check("finest largest distance of those cells from the neck / R",
           table.finest("max_fine_cell_distance"), options,
           "max-fine-cell-distance");
+    if (n_samples > 0)
+      check("finest Eq. 44 neck error (viscoelastic seed)",
+            table.finest("sampled_neck_error"), options,
+            "max-sampled-neck-error");
     check("finest |initial neck speed / Hopper's - 1|",
           std::abs(table.finest("initial_neck_speed_error")), options,
           "max-initial-neck-speed-error");
@@ -872,6 +928,78 @@ namespace
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
   }
+  // Any two-particle scene's neck against time (the viscoelastic seed's
+  // Figs. 10, 11, 13): CSV.levelN.csv with the neck radius, the neck
+  // curvature and, for a viscoelastic melt, tr c at the neck and its
+  // largest value anywhere; the table has the neck at a few times, the
+  // curvature's peak and the largest tr c at the neck.
+  void
+  neck_history(const std::string              &scene_file,
+               const std::vector<unsigned int> &levels,
+               const Options                   &options)
+  {
+    constexpr int             dim   = 2;
+    const std::vector<double> times = {0.001, 0.01, 0.05, 0.1, 0.2};
+    std::vector<std::string>  columns = time_columns("neck_t", times);
+    columns.insert(columns.end(),
+                   {"max_neck_curvature",
+                    "t_max_neck_curvature",
+                    "max_neck_trace_c",
+                    "max_trace_c",
+                    "rejected",
+                    "volume_drift"});
+    Table table(run_columns(columns), options.csv);
+    // The runs' directories are named after the CSV, so that studies of
+    // the same driver may run at once.
+    const std::string name =
+      "neck_history_" +
+      std::filesystem::path(options.csv.empty() ? "run" : options.csv)
+        .stem()
+        .string();
+    std::vector<LevelRun> runs;
+    for (const unsigned int level : levels)
+      {
+        const auto run =
+          run_level<dim>(scene_file, level, options, name, [](auto &, auto &) {});
+        runs.push_back(run);
+        const auto &m          = run.metrics;
+        const auto &t          = m.column("time");
+        const auto &neck       = m.column("neck_radius");
+        const auto &curvature  = m.column("neck_curvature");
+        const bool  melt       = m.has_column("neck_trace_c");
+        const std::vector<double> none(t.size(),
+                                       std::numeric_limits<double>::quiet_NaN());
+        const auto &neck_trace = melt ? m.column("neck_trace_c") : none;
+        const auto &max_trace  = melt ? m.column("max_trace_c") : none;
+        auto        series     = open_series(
+          options,
+          level,
+          "time,neck_radius,neck_curvature,neck_trace_c,max_trace_c");
+        unsigned int peak = 0;
+        for (unsigned int i = 0; i < t.size(); ++i)
+          {
+            if (series.is_open())
+              series << t[i] << ',' << neck[i] << ',' << curvature[i] << ','
+                     << neck_trace[i] << ',' << max_trace[i] << '\n';
+            if (curvature[i] > curvature[peak])
+              peak = i;
+          }
+        std::vector<double> values = values_at(t, neck, times);
+        values.insert(
+          values.end(),
+          {curvature[peak],
+           t[peak],
+           *std::max_element(neck_trace.begin(), neck_trace.end()),
+           *std::max_element(max_trace.begin(), max_trace.end()),
+           double(run.rejected_steps),
+           std::abs(m.column("volume_change").back())});
+        table.add(run_row(level, run, values));
+      }
+    check("finest largest tr c anywhere", table.finest("max_trace_c"), options,
+          "max-trace-c");
+    check("finest rejected steps", table.finest("rejected"), options,
+          "max-rejected");
+  }
 } // namespace
 
 int
@@ -906,6 +1034,8 @@ main(int argc, char **argv)
         pore(args[1], levels, parse_options(args, 3));
       else if (args[0] == "coalescence")
         coalescence(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "neck-history")
+        neck_history(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")
         {
           // Print the reference for a check against the quoted values.

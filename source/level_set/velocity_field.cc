@@ -4,13 +4,10 @@
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q1.h>
-
-#include <deal.II/grid/grid_tools.h>
-
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/level_set/point_value.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/velocity_field.h>
 
@@ -125,30 +122,17 @@ namespace levelsinter
   Tensor<1, dim>
   VelocityField<dim>::value(const Point<dim> &point) const
   {
-    // deal.II lets exactly one rank report a point as inside a locally
-    // owned cell; the other ranks see it in a ghost cell or not at all.
-    Tensor<1, dim> local;
-    unsigned int   found = 0;
-    const auto cell_and_point = GridTools::find_active_cell_around_point(
-      StaticMappingQ1<dim>::mapping, dofs, point);
-    if (cell_and_point.first != dofs.end() &&
-        cell_and_point.first->is_locally_owned())
-      {
-        const Quadrature<dim> at_point(
-          GeometryInfo<dim>::project_to_unit_cell(cell_and_point.second));
-        FEValues<dim> values(finite_element, at_point, update_values);
-        values.reinit(cell_and_point.first);
+    return value_at_point<Tensor<1, dim>>(
+      dofs, point, "velocity", [&](const auto &cell, const Point<dim> &unit) {
+        FEValues<dim> values(finite_element,
+                             Quadrature<dim>(unit),
+                             update_values);
+        values.reinit(cell);
         std::vector<Tensor<1, dim>> v(1);
         values[FEValuesExtractors::Vector(0)].get_function_values(
           ghosted_velocity, v);
-        local = v[0];
-        found = 1;
-      }
-    const MPI_Comm     comm  = dofs.get_communicator();
-    const unsigned int total = Utilities::MPI::sum(found, comm);
-    if (total == 0)
-      throw std::runtime_error("velocity requested outside the mesh");
-    return Utilities::MPI::sum(local, comm) / double(total);
+        return v[0];
+      });
   }
 
   template <int dim>

@@ -1,11 +1,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/level_set/point_value.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
@@ -31,6 +34,7 @@ namespace levelsinter
     , phases(make_phase_law<dim>(law, parameters))
     , zero_shear_viscosity(parameters.solid_viscosity +
                            (law.is_viscoelastic() ? law.polymer_viscosity : 0))
+    , relaxation_time(law.is_viscoelastic() ? law.relaxation_time : 0)
   {
     if (phases->has_history())
       throw std::runtime_error(
@@ -67,7 +71,7 @@ namespace levelsinter
             alpha.dof_handler(), *conformation_model);
         conformation->setup();
         operator_->set_conformation(*conformation);
-        conformation_time = -1;
+        conformation_pending = false;
       }
 
     if (settings.form == Form::csf_curvature)
@@ -139,8 +143,6 @@ namespace levelsinter
         TimerOutput::Scope scope(timer, "viscous flow: curvature");
         update_curvature(alpha);
       }
-    if (conformation && conformation_time >= 0 && t > conformation_time)
-      commit_conformation(alpha);
     phases->set_time_step(dt);
     {
       TimerOutput::Scope scope(timer, "viscous flow: assembly");
@@ -174,7 +176,7 @@ namespace levelsinter
       {
         TimerOutput::Scope scope(timer, "viscous flow: conformation");
         conformation_iterations = conformation->advance(velocity, dt);
-        conformation_time       = t;
+        conformation_pending    = true;
       }
   }
 
@@ -187,7 +189,7 @@ namespace levelsinter
     conformation->fade([&](const types::global_dof_index i) {
       return alpha.alpha()(i) < saturation ? 1. : 0.;
     });
-    conformation_time = -1;
+    conformation_pending = false;
 
     TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(),
                                         alpha.dof_handler().get_communicator());
@@ -213,16 +215,21 @@ namespace levelsinter
 
   template <int dim>
   void
-  ViscousFlow<dim>::add_state(const LevelSetField<dim> &alpha,
+  ViscousFlow<dim>::accept_step(const LevelSetField<dim> &alpha)
+  {
+    if (conformation && conformation_pending)
+      commit_conformation(alpha);
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::add_state(const LevelSetField<dim> &,
                               StateTransfer<dim>       &transfer)
   {
-    if (!conformation)
-      return;
-    // The time loop adapts the mesh (or checkpoints) after an accepted
-    // step.
-    if (conformation_time >= 0)
-      commit_conformation(alpha);
-    conformation->add_state(transfer);
+    // The committed state: the time loop accepted the last step
+    // (accept_step()), or it stops after a failed one.
+    if (conformation)
+      conformation->add_state(transfer);
   }
 
   template <int dim>
@@ -249,6 +256,40 @@ namespace levelsinter
         values.push_back(max_trace_c);
       }
     return values;
+  }
+
+  template <int dim>
+  std::vector<std::string>
+  ViscousFlow<dim>::point_metric_names() const
+  {
+    if (conformation_model)
+      return {"trace_c"};
+    return {};
+  }
+
+  template <int dim>
+  std::vector<double>
+  ViscousFlow<dim>::point_metric_values(const LevelSetField<dim> &alpha,
+                                        const Point<dim>         &point) const
+  {
+    if (!conformation_model)
+      return {};
+    // Before the first step c = I.
+    if (trace_c.size() != alpha.dof_handler().n_dofs())
+      return {3.};
+    return {value_at_point<double>(
+      alpha.dof_handler(),
+      point,
+      "tr c",
+      [&](const auto &cell, const Point<dim> &unit) {
+        FEValues<dim> values(alpha.dof_handler().get_fe(),
+                             Quadrature<dim>(unit),
+                             update_values);
+        values.reinit(cell);
+        std::vector<double> v(1);
+        values.get_function_values(trace_c, v);
+        return v[0];
+      })};
   }
 
   template <int dim>
@@ -322,11 +363,23 @@ namespace levelsinter
         parameters.surface_tension == 0 ||
         parameters.semi_implicit_surface_tension)
       return std::numeric_limits<double>::infinity();
-    // A viscoelastic melt: its zero-shear viscosity eta_s + eta_p. Where
-    // the elastic response is softer over a step (dt < lambda), a step
-    // that grows the interface is rejected and halved (check_step()).
-    return parameters.capillary_time_step_factor * zero_shear_viscosity *
-           h_min / parameters.surface_tension;
+    const double a = parameters.capillary_time_step_factor * h_min /
+                     parameters.surface_tension;
+    if (relaxation_time == 0)
+      return a * zero_shear_viscosity;
+    // A viscoelastic melt resists a step dt with the viscosity of its
+    // implicit polymer stress, eta_s + eta_p dt / (lambda + dt) (doc/
+    // numerics.md), not eta_0: the largest dt <= a (eta_s + eta_p dt /
+    // (lambda + dt)) is the positive root of dt^2 + b dt - a eta_s lambda
+    // with b = lambda - a eta_0 (eta_0 as lambda -> 0, a eta_s for
+    // lambda >> a eta_0). With eta_0 instead, the stiff melt of
+    // doc/validation.md (De = 10, beta = 0.001) took steps 4-10 times this
+    // limit near its elastic equilibrium: 116 rejected in its first 179.
+    const double eta_s = parameters.solid_viscosity;
+    const double b     = relaxation_time - a * zero_shear_viscosity;
+    const double c     = 4 * a * eta_s * relaxation_time;
+    return b > 0 ? 2 * a * eta_s * relaxation_time / (b + std::sqrt(b * b + c)) :
+                   (-b + std::sqrt(b * b + c)) / 2;
   }
 
   template class ViscousFlow<2>;

@@ -23,6 +23,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -527,9 +528,34 @@ namespace levelsinter
               row.push_back(neck);
           }
         const bool has_neck = row.size() > columns_before_neck;
+        // An equal pair: the curvature of its neck (from a fit over a few
+        // finest cells) and the mechanisms' fields at the neck (the
+        // viscoelastic seed's Figs. 8, 11, 13), read one finest cell inside
+        // the interface: on it the Q1 fields mix the particle's nodes with
+        // the atmosphere's.
+        const bool has_neck_shape = has_neck && particles.size() == 2 &&
+                                    particles[0][dim] == particles[1][dim];
+        std::optional<neck_measures::NeckShape<dim>> neck_shape;
+        if (has_neck_shape)
+          {
+            Point<dim> c1, c2;
+            for (unsigned int d = 0; d < dim; ++d)
+              {
+                c1[d] = particles[0][d];
+                c2[d] = particles[1][d];
+              }
+            neck_shape = neck_measures::neck_shape(alpha, c1, c2, h_min);
+            row.push_back(neck_shape->curvature);
+          }
         for (const auto &mechanism : mechanisms)
           for (const double value : mechanism->metric_values())
             row.push_back(value);
+        if (neck_shape)
+          for (const auto &mechanism : mechanisms)
+            for (const double value :
+                 mechanism->point_metric_values(alpha,
+                                                neck_shape->inner_point))
+              row.push_back(value);
         row.insert(row.end(), packing_row.begin(), packing_row.end());
         // Densification: the approach of the particle centres.
         if (packing_analysis &&
@@ -561,9 +587,15 @@ namespace levelsinter
               columns.push_back("under_resolved_curvature_cells");
             if (has_neck)
               columns.push_back("neck_radius");
+            if (has_neck_shape)
+              columns.push_back("neck_curvature");
             for (const auto &mechanism : mechanisms)
               for (const auto &name : mechanism->metric_names())
                 columns.push_back(name);
+            if (has_neck_shape)
+              for (const auto &mechanism : mechanisms)
+                for (const auto &name : mechanism->point_metric_names())
+                  columns.push_back("neck_" + name);
             if (packing_analysis)
               for (const auto &name : packing_analysis->column_names())
                 columns.push_back(name);
@@ -653,16 +685,23 @@ namespace levelsinter
           for (auto &mechanism : mechanisms)
             mechanism->check_step(alpha);
           last_iterations += correct_step(dt);
+          for (auto &mechanism : mechanisms)
+            mechanism->accept_step(alpha);
           return dt;
         }
       catch (const std::exception &failure)
         {
           if (retry == max_retries)
-            throw std::runtime_error(
-              "the step from t = " + std::to_string(t) + " failed " +
-              std::to_string(max_retries + 1) +
-              " times, the last time with dt = " + std::to_string(dt) +
-              ": " + failure.what());
+            {
+              // Back to the last accepted state, which run() saves.
+              TrilinosWrappers::MPI::Vector copy(start_of_step);
+              alpha.set_from_owned(copy);
+              throw std::runtime_error(
+                "the step from t = " + std::to_string(t) + " failed " +
+                std::to_string(max_retries + 1) +
+                " times, the last time with dt = " + std::to_string(dt) +
+                ": " + failure.what());
+            }
           ++summary.rejected_steps;
           pcout << "step from t = " << t << " with dt = " << dt
                 << " failed; retrying with dt = " << dt / 2 << ". Reason: "
@@ -719,7 +758,23 @@ namespace levelsinter
         // 1.-2. Interface velocity, transport with convective
         //       reinitialisation (Eq. 68), corrections (v^c, Eq. 113-116);
         //       a failed step is retried.
-        const double dt = take_step(t);
+        double dt = 0;
+        try
+          {
+            dt = take_step(t);
+          }
+        catch (const std::exception &failure)
+          {
+            // Stop with a diagnosis and the last accepted state saved
+            // (DESIGN.md Sect. 5), from which the run can go on with
+            // other settings.
+            write_checkpoint(step, t);
+            throw std::runtime_error(
+              std::string(failure.what()) + "; the last accepted state (step " +
+              std::to_string(step) + ", t = " + std::to_string(t) +
+              ") is in a checkpoint: 'levelsinter --resume " +
+              scene.output.directory + "' continues from it");
+          }
         total_iterations += last_iterations;
         t += dt;
         ++step;

@@ -26,6 +26,36 @@ namespace levelsinter
                 const Point<dim>         &c1,
                 const Point<dim>         &c2);
 
+    /** Where the neck of an equal pair meets the interface, and its shape. */
+    template <int dim>
+    struct NeckShape
+    {
+      // On the mid-plane, on the first of neck_radius()'s rays that meets
+      // the interface (the mid-point if none does, or if it lies in the
+      // pore), and on that ray one @p spacing inside the solid (at most
+      // half-way to the mid-point).
+      Point<dim> point;
+      Point<dim> inner_point;
+      // The viscoelastic seed's neck curvature kappa = 1/R1 + 1/R2 (Eq.
+      // 45-47), in its sign: -div n, positive where the neck is concave;
+      // the hoop term 1/R2 about the line of centres in 3D only.
+      double curvature = 0;
+    };
+
+    /**
+     * The neck of two equal particles centred at c1 and c2 (on the
+     * mid-plane): its point on the interface and its curvature, from a
+     * parabola fitted to the cross-section radii at 7 planes @p spacing
+     * apart along the line of centres (a few finest cells: closer planes
+     * see the Q1 interface's kinks).
+     */
+    template <int dim>
+    NeckShape<dim>
+    neck_shape(const LevelSetField<dim> &level_set,
+               const Point<dim>         &c1,
+               const Point<dim>         &c2,
+               const double              spacing);
+
     /** The neck between particles i and j (indices into the particle list). */
     struct PairNeck
     {

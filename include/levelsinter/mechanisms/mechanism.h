@@ -105,6 +105,15 @@ namespace levelsinter
     {}
 
     /**
+     * The step has been accepted (check_step() and the corrections passed):
+     * what add_velocity() advanced becomes the mechanism's state, before the
+     * metrics of the step are recorded.
+     */
+    virtual void
+    accept_step(const LevelSetField<dim> &)
+    {}
+
+    /**
      * True if the velocity is driven by the interface's curvature (surface
      * tension, surface diffusion): the time loop then reports where the
      * mesh under-resolves the curvature.
@@ -124,6 +133,24 @@ namespace levelsinter
 
     virtual std::vector<double>
     metric_values() const
+    {
+      return {};
+    }
+
+    /**
+     * Fields worth reading at a pair's neck (metrics.csv columns "neck_" +
+     * name, e.g. the polymer stretch of a viscoelastic melt), and their
+     * values at @p point after the last step (collective: every rank calls
+     * it with the same point).
+     */
+    virtual std::vector<std::string>
+    point_metric_names() const
+    {
+      return {};
+    }
+
+    virtual std::vector<double>
+    point_metric_values(const LevelSetField<dim> &, const Point<dim> &) const
     {
       return {};
     }

@@ -105,6 +105,19 @@ namespace levelsinter
     std::vector<double>
     metric_values() const override;
 
+    /** A viscoelastic melt: the conformation of the step becomes the
+     * state (and tr c, max tr c are measured on it). */
+    void
+    accept_step(const LevelSetField<dim> &alpha) override;
+
+    /** A viscoelastic melt: tr c (the polymer stretch) at the point. */
+    std::vector<std::string>
+    point_metric_names() const override;
+
+    std::vector<double>
+    point_metric_values(const LevelSetField<dim> &alpha,
+                        const Point<dim>         &point) const override;
+
     /**
      * Use @p kappa (evaluated at the level-set nodes) instead of the
      * projected curvature: benchmarks with a known interface (static
@@ -149,16 +162,18 @@ namespace levelsinter
     const std::unique_ptr<PhaseLaw<dim>> phases;
     // eta_s, plus eta_p for a viscoelastic melt: the capillary limit's.
     const double zero_shear_viscosity;
+    // A viscoelastic melt's relaxation time lambda (0 otherwise).
+    const double relaxation_time;
     std::unique_ptr<TwoPhaseStokes<dim>> operator_;
     std::unique_ptr<MixedCurvatureSolver<dim>> curvature_solver;
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;
-    // Viscoelastic melts only: the conformation tensor, the time of the
-    // step it was advanced for but not committed (-1: none), tr c at the
-    // nodes for the output and its maximum.
+    // Viscoelastic melts only: the conformation tensor, whether a step
+    // advanced it that is not accepted yet, tr c at the nodes for the
+    // output and its maximum.
     std::unique_ptr<ConformationModel>          conformation_model;
     std::unique_ptr<ConformationField<dim>>     conformation;
-    double                                      conformation_time = -1;
+    bool                                        conformation_pending = false;
     unsigned int                                conformation_iterations = 0;
     TrilinosWrappers::MPI::Vector               trace_c;
     double                                      max_trace_c = 3;
