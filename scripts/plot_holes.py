@@ -31,7 +31,7 @@ panels = sys.argv[2:]
 fig, axes = plt.subplots(1, len(panels), figsize=(5 * len(panels), 4),
                          squeeze=False)
 for ax, argument in zip(axes[0], panels):
-    title, _, rest = argument.partition("=")
+    title, _, rest = argument.rpartition("=")
     name, _, b = rest.partition(":")
     b = float(b) if b else 0.3
     rows = list(csv.DictReader(open(name)))

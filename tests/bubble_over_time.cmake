@@ -1,0 +1,39 @@
+# --- Static bubble over time (issue 17, "Bubble over time") -----------------
+# (doc/validation.md, "Static bubble over time"). Driver:
+# levelsinter_viscous_validation bubble-time. C = |v|_max eta / gamma and
+# the bubble's area error after every step on a uniform mesh, h = 1/40,
+# 1/80, 1/160 at levels 3, 4, 5 (R/h = 8, 16, 32), filter and band 6 h, the
+# explicit capillary step eta h / gamma.
+set(BUBBLE_TIME ${CMAKE_SOURCE_DIR}/parameter_files/static_bubble_over_time_2d.prm)
+
+# CI: 50 steps. MEASURED_CI
+add_test(NAME bubble_over_time_csf_curvature_2d COMMAND ${VISCOUS} bubble-time
+  ${BUBBLE_TIME} 4 --set "Time/Maximum steps=50")
+add_test(NAME bubble_over_time_csf_curvature_vc_2d COMMAND ${VISCOUS}
+  bubble-time ${BUBBLE_TIME} 4 --set "Time/Maximum steps=50"
+  --set "Volume correction/Enabled=true")
+add_test(NAME bubble_over_time_sharp_2d COMMAND ${VISCOUS} bubble-time
+  ${BUBBLE_TIME} 3 --set "Time/Maximum steps=50"
+  --set "Viscous flow/Surface tension form=sharp")
+add_test(NAME bubble_over_time_sharp_vc_2d COMMAND ${VISCOUS} bubble-time
+  ${BUBBLE_TIME} 3 --set "Time/Maximum steps=50"
+  --set "Viscous flow/Surface tension form=sharp"
+  --set "Volume correction/Enabled=true")
+
+# Studies (validation-long): 1000 steps at R/h = 8 and 16 (R/h = 32, the
+# scene itself, costs 11 CPU minutes and more on a shared machine:
+# measured by hand, doc/validation.md).
+foreach(form csf-curvature sharp)
+  string(REPLACE "-" "_" name ${form})
+  add_test(NAME study_bubble_over_time_${name}_2d COMMAND ${VISCOUS}
+    bubble-time ${BUBBLE_TIME} 3,4
+    --set "Viscous flow/Surface tension form=${form}"
+    --csv study_bubble_over_time_${name}.csv)
+  add_test(NAME study_bubble_over_time_${name}_vc_2d COMMAND ${VISCOUS}
+    bubble-time ${BUBBLE_TIME} 3,4
+    --set "Viscous flow/Surface tension form=${form}"
+    --set "Volume correction/Enabled=true"
+    --csv study_bubble_over_time_${name}_vc.csv)
+  set_tests_properties(study_bubble_over_time_${name}_2d
+    study_bubble_over_time_${name}_vc_2d PROPERTIES LABELS validation-long)
+endforeach()
