@@ -413,18 +413,18 @@ namespace
     std::vector<double> roundness;  // 4 pi A / P^2, NaN once closed
     // The equivalent radius at half its initial value, at six finest
     // cells (below, the hole falls behind: doc/validation.md) and zero.
-    double half_time        = std::numeric_limits<double>::quiet_NaN();
-    double six_cell_time  = std::numeric_limits<double>::quiet_NaN();
-    double vanish_time      = std::numeric_limits<double>::quiet_NaN();
+    double half_time     = std::numeric_limits<double>::quiet_NaN();
+    double six_cell_time = std::numeric_limits<double>::quiet_NaN();
+    double vanish_time   = std::numeric_limits<double>::quiet_NaN();
   };
 
   struct HolesRun
   {
-    std::vector<double>   time;
-    std::vector<double>   area_change; // solid, relative
-    std::vector<HoleRun>  holes;
-    unsigned int          steps    = 0;
-    double                cpu_time = 0;
+    std::vector<double>  time;
+    std::vector<double>  area_change; // solid, relative
+    std::vector<HoleRun> holes;
+    unsigned int         steps    = 0;
+    double               cpu_time = 0;
   };
 
   // The first time at which @p values falls to @p level, linear between
@@ -531,7 +531,7 @@ namespace
         std::vector<double> radius;
         for (const double a : hole.area)
           radius.push_back(std::sqrt(a / M_PI));
-        hole.half_time       = crossing_time(run.time, radius, radius[0] / 2);
+        hole.half_time     = crossing_time(run.time, radius, radius[0] / 2);
         hole.six_cell_time = crossing_time(run.time, radius, 6 * h_min);
         for (unsigned int i = 0; i < run.time.size(); ++i)
           if (hole.area[i] == 0)
