@@ -37,7 +37,7 @@ add_test(NAME bubble_over_time_sharp_vc_2d COMMAND ${VISCOUS} bubble-time
 # (12 min on the shared machine), sharp at R/h = 8. R/h = 32 (the scene
 # itself, about 11 CPU minutes from 19 s for 30 steps, 38 min on the
 # shared machine) and sharp at
-# R/h = 32 (100 steps) were measured by hand (doc/validation.md).
+# R/h = 32 were measured by hand (doc/validation.md).
 foreach(case "csf-curvature;3,4" "sharp;3")
   list(GET case 0 form)
   list(GET case 1 levels)
