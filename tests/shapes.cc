@@ -15,13 +15,25 @@
 //     closing under surface tension, against the exact Stokes solution
 //     (doc/numerics.md): the wall thickness b - a grows at gamma /
 //     (2 eta_s) while the area stays.
+//   shapes holes SCENE.prm LEVELS [options]
+//     a viscous cylinder (one particle) with holes (Pores, Elliptic
+//     pores) closing under surface tension, with the packing analysis on:
+//     each hole's area and roundness against time, the times at which its
+//     equivalent radius has halved and has reached six finest cells, and
+//     the closure time estimated from the latter, against the
+//     concentric annulus of the same areas (exact) and, with
+//     --single-holes 1, against the same scene with that hole alone.
 //
-// Options: --csv FILE, --set ENTRY=VALUE (hollow), limits
+// Options: --csv FILE, --set ENTRY=VALUE (hollow, holes), limits
 // --max-area-error, --max-perimeter-error (relative, finest level),
 // --min-area-order, --max-displacement (finest level, / h),
 // --max-projection-error (/ h); hollow: --max-rate-error,
-// --max-radius-error, --max-area-drift. Exit code 0 only if every check
-// passes.
+// --max-radius-error, --max-area-drift; holes: --min-closure-ratio,
+// --max-closure-ratio (closure estimate), --min-half-time-ratio,
+// --max-half-time-ratio (each hole's time against its single-hole run if
+// there is one, else against the annulus), --min-roundness-at-half,
+// --max-roundness-at-half (4 pi A / P^2 when the equivalent radius has
+// halved), --max-area-drift. Exit code 0 only if every check passes.
 
 #include <deal.II/base/mpi.h>
 
@@ -40,6 +52,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 
 using namespace levelsinter;
@@ -375,6 +388,330 @@ namespace
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
   }
+
+  // The concentric annulus b, a0 closing (doc/numerics.md, "Hollow
+  // cylinder"): the time at which the inner radius has fallen to a. The
+  // wall w grows as w0 + gamma t / (2 eta_s) at constant area b(t)^2 -
+  // a(t)^2 = b^2 - a0^2, so at radius a: w^2 + 2 a w - (b^2 - a0^2) = 0.
+  double
+  annulus_time(const double b,
+               const double a0,
+               const double a,
+               const double gamma,
+               const double eta)
+  {
+    const double w = -a + std::sqrt(a * a + b * b - a0 * a0);
+    return 2 * eta / gamma * (w - (b - a0));
+  }
+
+  // One hole of a holes run: its series and the times it reached.
+  struct HoleRun
+  {
+    Point<2>            centre;
+    double              radius = 0; // of the circle of the same area
+    std::vector<double> area;       // whole hole, 0 once closed
+    std::vector<double> roundness;  // 4 pi A / P^2, NaN once closed
+    // The equivalent radius at half its initial value, at six finest
+    // cells (below, the hole falls behind: doc/validation.md) and zero.
+    double half_time     = std::numeric_limits<double>::quiet_NaN();
+    double six_cell_time = std::numeric_limits<double>::quiet_NaN();
+    double vanish_time   = std::numeric_limits<double>::quiet_NaN();
+  };
+
+  struct HolesRun
+  {
+    std::vector<double>  time;
+    std::vector<double>  area_change; // solid, relative
+    std::vector<HoleRun> holes;
+    unsigned int         steps    = 0;
+    double               cpu_time = 0;
+  };
+
+  // The first time at which @p values falls to @p level, linear between
+  // the samples; NaN if it never does.
+  double
+  crossing_time(const std::vector<double> &time,
+                const std::vector<double> &values,
+                const double               level)
+  {
+    for (unsigned int i = 1; i < values.size(); ++i)
+      if (values[i] <= level && values[i - 1] > level)
+        return time[i - 1] + (time[i] - time[i - 1]) *
+                               (values[i - 1] - level) /
+                               (values[i - 1] - values[i]);
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+
+  // Runs the scene with @p overrides into @p directory and follows each of
+  // its holes through pores.csv: the closed pore whose centroid is nearest
+  // the hole's centre at the first step, by its tracking id. A hole cut by
+  // a symmetry plane through its centre is seen as a half (a quarter by
+  // two planes): its area is scaled back and its roundness divided by the
+  // same factor (4 pi A / P^2 of the part).
+  HolesRun
+  run_holes(const std::string                                      &scene_file,
+            const std::vector<std::pair<std::string, std::string>> &overrides,
+            const std::string                                      &directory,
+            const double                                            h_min)
+  {
+    constexpr int dim = 2;
+    std::filesystem::create_directories(directory);
+    auto all = overrides;
+    all.insert(all.end(),
+               {{"Output/Directory", directory},
+                {"Output/Metrics interval", "1"},
+                {"Output/Field formats", "none"},
+                {"Analysis/Packing analysis", "true"}});
+    const auto scene = read_scene(scene_file, all);
+    const auto &g    = scene.geometry;
+    HolesRun    run;
+    for (const auto &p : g.pores)
+      run.holes.push_back({Point<2>(p[0], p[1]), p[2], {}, {}});
+    for (const auto &e : g.elliptic_pores)
+      run.holes.push_back(
+        {Point<2>(e[0], e[1]), std::sqrt(e[2] * e[3]), {}, {}});
+    if (g.particles.size() != 1 || run.holes.empty())
+      throw std::runtime_error("the holes case needs one particle and at "
+                               "least one pore");
+    Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+    simulation.initialise();
+    const auto summary = simulation.run();
+    run.steps    = summary.steps;
+    run.cpu_time = summary.cpu_time;
+
+    const study::CsvTable metrics(directory + "/metrics.csv");
+    run.time        = metrics.column("time");
+    run.area_change = metrics.column("volume_change");
+    const auto &steps = metrics.column("step");
+    const study::CsvTable pores(directory + "/pores.csv");
+    const auto &pore_step = pores.column("step");
+    const auto &id        = pores.column("pore");
+    const auto &volume    = pores.column("volume");
+    const auto &length    = pores.column("area");
+    const auto &x         = pores.column("centroid_x");
+    const auto &y         = pores.column("centroid_y");
+    for (auto &hole : run.holes)
+      {
+        double parts = 1;
+        for (const auto plane : scene.domain.symmetry_planes)
+          {
+            const unsigned int axis = plane / 2;
+            const double       wall = plane % 2 == 0 ?
+                                        scene.domain.lower_corner[axis] :
+                                        scene.domain.upper_corner[axis];
+            if (std::abs(hole.centre[axis] - wall) < 1e-12)
+              parts *= 2;
+          }
+        double       nearest = std::numeric_limits<double>::max();
+        unsigned int pore    = 0;
+        for (unsigned int r = 0; r < pores.n_rows() && pore_step[r] == steps[0];
+             ++r)
+          if (id[r] > 0 && hole.centre.distance(Point<2>(x[r], y[r])) < nearest)
+            {
+              nearest = hole.centre.distance(Point<2>(x[r], y[r]));
+              pore    = id[r];
+            }
+        if (pore == 0)
+          throw std::runtime_error("no closed pore at the first step near the "
+                                   "hole at " +
+                                   std::to_string(hole.centre[0]) + ", " +
+                                   std::to_string(hole.centre[1]));
+        for (const double step : steps)
+          {
+            hole.area.push_back(0);
+            hole.roundness.push_back(std::numeric_limits<double>::quiet_NaN());
+            for (unsigned int r = 0; r < pores.n_rows(); ++r)
+              if (pore_step[r] == step && id[r] == pore)
+                {
+                  hole.area.back() = parts * volume[r];
+                  hole.roundness.back() =
+                    4 * M_PI * volume[r] / (parts * length[r] * length[r]);
+                }
+          }
+        std::vector<double> radius;
+        for (const double a : hole.area)
+          radius.push_back(std::sqrt(a / M_PI));
+        hole.half_time     = crossing_time(run.time, radius, radius[0] / 2);
+        hole.six_cell_time = crossing_time(run.time, radius, 6 * h_min);
+        for (unsigned int i = 0; i < run.time.size(); ++i)
+          if (hole.area[i] == 0)
+            {
+              hole.vanish_time = run.time[i];
+              break;
+            }
+      }
+    return run;
+  }
+
+  // Viscous cylinders with holes (see the head of this file).
+  void
+  holes(const std::string &scene_file, const std::vector<std::string> &args)
+  {
+    const Options options = study::parse_options(args, 3);
+    const auto    single  = options.limits.find("single-holes");
+    const bool    with_single_runs =
+      single != options.limits.end() && single->second != 0;
+    const auto   &overrides = options.overrides;
+    Table table({"level", "h", "hole", "x", "y", "radius", "steps",
+                 "cpu_time", "half_time", "half_time_annulus",
+                 "half_time_single", "six_cell_time",
+                 "six_cell_time_annulus", "six_cell_time_single",
+                 "closure_estimate", "closure_time_annulus", "vanish_time",
+                 "roundness_initial", "roundness_at_half", "area_drift",
+                 "max_area_drift"},
+                options.csv);
+    double worst_low_closure = std::numeric_limits<double>::max(),
+           worst_high_closure = 0, worst_low_half = worst_low_closure,
+           worst_high_half = 0, worst_low_roundness = 1,
+           worst_high_roundness = 0, worst_drift = 0;
+    const auto levels = study::parse_levels(args.at(2));
+    for (const unsigned int level : levels)
+      {
+        const auto   base = read_scene(scene_file, overrides);
+        const double h    = study::cell_size(base, level);
+        const double b    = base.geometry.particles.at(0).at(2);
+        const double gamma = base.viscous_flow.surface_tension;
+        const double eta   = base.viscous_flow.solid_viscosity;
+        // One directory per scene and CSV: the studies may run at once.
+        const std::string stem =
+          "shapes_output/holes_" +
+          std::filesystem::path(scene_file).stem().string() + "_" +
+          std::filesystem::path(options.csv).stem().string() + "_level" +
+          std::to_string(level);
+        auto at_level = overrides;
+        at_level.insert(
+          at_level.end(),
+          {{"Mesh refinement/Maximum level", std::to_string(level)},
+           {"Mesh refinement/Band width", std::to_string(6 * h)},
+           {"Level set/Filter thickness", std::to_string(8 * h)}});
+        // Cells of the finest level (curvature refinement adds levels
+        // below the band's).
+        const double h_min =
+          h / (1u << read_scene(scene_file, at_level).refinement.curvature_levels);
+        const HolesRun run = run_holes(scene_file, at_level, stem, h_min);
+
+        // Each hole alone (circular holes: one entry of Pores).
+        std::vector<HoleRun> alone(run.holes.size());
+        if (with_single_runs)
+          for (unsigned int k = 0; k < run.holes.size(); ++k)
+            {
+              const auto &hole = run.holes[k];
+              if (k >= base.geometry.pores.size())
+                throw std::runtime_error("--single-holes: circular holes only");
+              auto one = at_level;
+              one.insert(one.end(),
+                         {{"Geometry/Pores",
+                           std::to_string(hole.centre[0]) + ", " +
+                             std::to_string(hole.centre[1]) + ", " +
+                             std::to_string(hole.radius)},
+                          {"Geometry/Elliptic pores", ""}});
+              alone[k] = run_holes(scene_file,
+                                   one,
+                                   stem + "_hole" + std::to_string(k + 1),
+                                   h_min)
+                           .holes[0];
+            }
+
+        std::ofstream series;
+        if (study::is_root() && !options.csv.empty())
+          {
+            series.open(options.csv + ".level" + std::to_string(level) +
+                        ".csv");
+            series << "time,area_change";
+            for (unsigned int k = 1; k <= run.holes.size(); ++k)
+              series << ",area_" << k << ",roundness_" << k;
+            series << '\n' << std::setprecision(10);
+            for (unsigned int i = 0; i < run.time.size(); ++i)
+              {
+                series << run.time[i] << ',' << run.area_change[i];
+                for (const auto &hole : run.holes)
+                  series << ',' << hole.area[i] << ',' << hole.roundness[i];
+                series << '\n';
+              }
+          }
+        double max_drift = 0;
+        for (const double change : run.area_change)
+          max_drift = std::max(max_drift, std::abs(change));
+        for (unsigned int k = 0; k < run.holes.size(); ++k)
+          {
+            const auto  &hole = run.holes[k];
+            const double half_annulus =
+              annulus_time(b, hole.radius, hole.radius / 2, gamma, eta);
+            const double closure_annulus =
+              annulus_time(b, hole.radius, 0, gamma, eta);
+            const double six_cell_annulus =
+              annulus_time(b, hole.radius, 6 * h_min, gamma, eta);
+            // Below six cells the annulus' remaining time: a hole that
+            // small closes as in a large body, at nearly gamma / (2 eta_s).
+            const auto closure_estimate = [&](const HoleRun &run) {
+              return run.six_cell_time + closure_annulus - six_cell_annulus;
+            };
+            const double roundness_at_half =
+              hole.roundness[std::lower_bound(run.time.begin(),
+                                              run.time.end(),
+                                              hole.half_time) -
+                             run.time.begin()];
+            table.add({double(level),
+                       h,
+                       double(k + 1),
+                       hole.centre[0],
+                       hole.centre[1],
+                       hole.radius,
+                       double(run.steps),
+                       run.cpu_time,
+                       hole.half_time,
+                       half_annulus,
+                       alone[k].half_time,
+                       hole.six_cell_time,
+                       six_cell_annulus,
+                       alone[k].six_cell_time,
+                       closure_estimate(hole),
+                       closure_annulus,
+                       hole.vanish_time,
+                       hole.roundness[0],
+                       roundness_at_half,
+                       std::abs(run.area_change.back()),
+                       max_drift});
+            if (level != levels.back())
+              continue;
+            const double closure_ratio =
+              closure_estimate(hole) / (with_single_runs ?
+                                          closure_estimate(alone[k]) :
+                                          closure_annulus);
+            const double half_ratio =
+              hole.half_time /
+              (with_single_runs ? alone[k].half_time : half_annulus);
+            // NaN (not closed) must fail the checks below.
+            const auto low = [](const double worst, const double value) {
+              return std::isnan(value) ? value : std::min(worst, value);
+            };
+            const auto high = [](const double worst, const double value) {
+              return std::isnan(value) ? value : std::max(worst, value);
+            };
+            worst_low_closure  = low(worst_low_closure, closure_ratio);
+            worst_high_closure = high(worst_high_closure, closure_ratio);
+            worst_low_half     = low(worst_low_half, half_ratio);
+            worst_high_half    = high(worst_high_half, half_ratio);
+            worst_low_roundness  = low(worst_low_roundness, roundness_at_half);
+            worst_high_roundness = high(worst_high_roundness, roundness_at_half);
+          }
+        worst_drift = max_drift;
+      }
+    check("finest smallest closure time ratio", worst_low_closure, options,
+          "min-closure-ratio", false);
+    check("finest largest closure time ratio", worst_high_closure, options,
+          "max-closure-ratio");
+    check("finest smallest half-radius time ratio", worst_low_half, options,
+          "min-half-time-ratio", false);
+    check("finest largest half-radius time ratio", worst_high_half, options,
+          "max-half-time-ratio");
+    check("finest smallest roundness at half radius", worst_low_roundness,
+          options, "min-roundness-at-half", false);
+    check("finest largest roundness at half radius", worst_high_roundness,
+          options, "max-roundness-at-half");
+    check("finest largest solid-area drift", worst_drift, options,
+          "max-area-drift");
+  }
 } // namespace
 
 int
@@ -395,6 +732,8 @@ main(int argc, char **argv)
         }
       else if (args[0] == "hollow")
         hollow(args[1], args);
+      else if (args[0] == "holes")
+        holes(args[1], args);
       else
         throw std::runtime_error("unknown mode " + args[0]);
     }

@@ -7,6 +7,7 @@
 //   levelsinter_viscous_validation pore SCENE.prm LEVELS [options]
 //   levelsinter_viscous_validation coalescence SCENE.prm LEVELS [options]
 //   levelsinter_viscous_validation neck-history SCENE.prm LEVELS [options]
+//   levelsinter_viscous_validation bubble-time SCENE.prm LEVELS [options]
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
@@ -28,7 +29,8 @@
 // the particles' centroid that holds the pore and solid only),
 // --max-closure-time, --max-pore-area-ratio, --max-area-drift; coalescence:
 // --max-roundness-error, --max-area-drift; neck-history: --max-trace-c,
-// --max-rejected) and for all but the bubble the
+// --max-rejected; bubble-time: --max-C, --max-C-growth (largest C over C
+// at the first step), --max-area-drift) and for all but the bubbles the
 // band and filter thickness in cells (--band-cells, --filter-cells) and a
 // fixed step --dt-factor F (dt = F eta_s h / gamma, no CFL or capillary
 // limit).
@@ -1000,6 +1002,85 @@ namespace
     check("finest rejected steps", table.finest("rejected"), options,
           "max-rejected");
   }
+
+  // The static bubble over time (the scene's form, time step and number
+  // of steps), uniform mesh at each level, filter 6 h: C = |v|_max eta /
+  // gamma and the bubble's area error after every step, from metrics.csv. The CSV
+  // series FILE.levelL.csv holds both against the step.
+  void
+  bubble_time(const std::string               &scene_file,
+              const std::vector<unsigned int> &levels,
+              const Options                   &options)
+  {
+    constexpr int dim = 2;
+    Table table({"level", "h", "R_over_h", "steps", "cpu_time", "C_first",
+                 "C_last", "C_max", "area_error_last", "area_error_max"},
+                options.csv);
+    double worst_C = 0, worst_growth = 0, worst_drift = 0;
+    for (const unsigned int level : levels)
+      {
+        const auto   base = read_scene(scene_file, options.overrides);
+        const double h    = study::cell_size(base, level);
+        auto overrides    = options.overrides;
+        overrides.insert(
+          overrides.end(),
+          {{"Mesh refinement/Minimum level", std::to_string(level)},
+           {"Mesh refinement/Maximum level", std::to_string(level)},
+           // Filter and band (the latter only satisfies the scene's
+           // checks on a uniform mesh) 6 h, as the scene at level 5.
+           {"Level set/Filter thickness", std::to_string(6 * h)},
+           {"Mesh refinement/Band width", std::to_string(6 * h)},
+           // One directory per CSV: the studies may run at once.
+           {"Output/Directory",
+            output_directory("bubble_time_" +
+                             std::filesystem::path(options.csv).stem().string() +
+                             "_level" + std::to_string(level))},
+           {"Output/Metrics interval", "1"},
+           {"Output/Field formats", "none"}});
+        const auto      scene = read_scene(scene_file, overrides);
+        Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
+        simulation.initialise();
+        const auto summary = simulation.run();
+
+        const study::CsvTable metrics(scene.output.directory + "/metrics.csv");
+        const auto &steps = metrics.column("step");
+        const auto &v     = metrics.column("max_velocity");
+        const auto &area  = metrics.column("volume_change");
+        const double scale = scene.viscous_flow.solid_viscosity /
+                             scene.viscous_flow.surface_tension;
+        // Row 0 is t = 0, before the first solve.
+        std::vector<double> C;
+        double              C_max = 0, area_max = 0;
+        for (unsigned int i = 1; i < steps.size(); ++i)
+          {
+            C.push_back(v[i] * scale);
+            C_max    = std::max(C_max, C.back());
+            area_max = std::max(area_max, std::abs(area[i]));
+          }
+        if (C.empty())
+          throw std::runtime_error("bubble-time: the run made no step");
+        if (root && !options.csv.empty())
+          {
+            std::ofstream series(options.csv + ".level" +
+                                 std::to_string(level) + ".csv");
+            series << "step,time,C,area_error\n" << std::setprecision(10);
+            for (unsigned int i = 1; i < steps.size(); ++i)
+              series << steps[i] << ',' << metrics.column("time")[i] << ','
+                     << C[i - 1] << ',' << area[i] << '\n';
+          }
+        const double R = scene.geometry.particles[0][dim];
+        table.add({double(level), h, R / h, double(summary.steps),
+                   summary.cpu_time, C.front(), C.back(), C_max,
+                   area.back(), area_max});
+        worst_C      = std::max(worst_C, C_max);
+        worst_growth = std::max(worst_growth, C_max / C.front());
+        worst_drift  = std::max(worst_drift, area_max);
+      }
+    check("largest C = v_max eta / gamma", worst_C, options, "max-C");
+    check("largest C / C at the first step", worst_growth, options,
+          "max-C-growth");
+    check("largest |area error|", worst_drift, options, "max-area-drift");
+  }
 } // namespace
 
 int
@@ -1036,6 +1117,8 @@ main(int argc, char **argv)
         coalescence(args[1], levels, parse_options(args, 3));
       else if (args[0] == "neck-history")
         neck_history(args[1], levels, parse_options(args, 3));
+      else if (args[0] == "bubble-time")
+        bubble_time(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")
         {
           // Print the reference for a check against the quoted values.
