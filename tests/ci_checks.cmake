@@ -341,16 +341,18 @@ add_test(NAME viscous_two_spheres_coalescence_3d COMMAND ${VISCOUS} spheres
 # t gamma/(eta a) = 0.52), on 1 and 2 ranks. At R/h = 5 the sphere itself
 # reads as curved enough (sqrt(2) N_r h / a = 1.13 > 1), and the neck on
 # the symmetry plane x = 0 is seen through the mirrored nodal normals.
-# Measured: x/a at t gamma/(eta a) = 0.5 0.3414 on 1 and 2 ranks (9.0 s CPU
-# on 1), 0.3325 without the extra level (doc/validation.md, "With curvature
-# refinement"). Limit 0.337, halfway: a run whose refinement does not take
-# effect fails.
+# Measured (since the volume correction mirrors its normals on the planes,
+# 26 Nov 2026): x/a at t gamma/(eta a) = 0.5 0.3332 with the extra level
+# (4.0 s CPU on 1 rank), 0.3459 without it (before: 0.3414 and 0.3325; at
+# R/h = 5 the neck is not in the asymptotic range, doc/validation.md "With
+# curvature refinement"). Limit 0.3395, halfway: a run whose refinement
+# does not take effect fails.
 foreach(np 1 2)
   add_test(NAME viscous_two_spheres_curvature_refinement_3d_np${np}
     COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${VISCOUS} spheres ${SPHERES} 3
       ${SPHERES_VC} --set "Time/End time=0.125"
       --set "Mesh refinement/Curvature refinement levels=1"
-      --min-neck_tau0.5 0.337)
+      --max-neck_tau0.5 0.3395)
 endforeach()
 # FGMRES count in 3D at R/h = 10, eta_f/eta_s = 1e-6, first 2 solves:
 # measured 28 / 28. Limit 31: the count at R/h = 20 is 32.

@@ -23,7 +23,7 @@
 // neck, / R); spheres:
 // --min-neck-growth, --max-volume-drift,
 // --min-early-slope, --max-early-slope, --max-final-radius-error,
-// --min-neck_tau0.5, --min-neck_tau1, --min-neck_tau2 (x/a at those
+// --min-neck_tau0.5, --min-neck_tau1, --min-neck_tau2 and --max-... (x/a at those
 // t gamma/(eta a) from touching); pore:
 // --pore-half-width W (required: a square window of half-width W around
 // the particles' centroid that holds the pore and solid only),
@@ -816,12 +816,19 @@ namespace
           "max-final-radius-error");
     for (const auto &name : columns)
       if (name.rfind("neck_tau", 0) == 0)
-        check("finest neck / a at t gamma/(eta a) = " + name.substr(8) +
-                " (>=)",
-              table.finest(name),
-              options,
-              "min-" + name,
-              false);
+        {
+          check("finest neck / a at t gamma/(eta a) = " + name.substr(8) +
+                  " (>=)",
+                table.finest(name),
+                options,
+                "min-" + name,
+                false);
+          check("finest neck / a at t gamma/(eta a) = " + name.substr(8) +
+                  " (<=)",
+                table.finest(name),
+                options,
+                "max-" + name);
+        }
     check_iterations(runs, options);
   }
 
