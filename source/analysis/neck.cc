@@ -220,7 +220,17 @@ namespace levelsinter::neck_measures
     std::vector<Ray<dim>> rays;
     add_section_rays(sections[n], rays);
     const std::vector<double> exits = caster.exit_distances(rays);
-    const std::vector<double> radii = cross_section_radii(caster, sections);
+    std::vector<double> radii = cross_section_radii(caster, sections);
+    // The profile of two equal particles is even about the mid-plane: fit
+    // its even part. A section beyond a symmetry plane through the neck
+    // lies outside the mesh (radius 0): its mirror image stands for it.
+    for (int k = 1; k <= n; ++k)
+      {
+        double &left = radii[n - k], &right = radii[n + k];
+        const double even =
+          (left > 0 && right > 0) ? (left + right) / 2 : std::max(left, right);
+        left = right = even;
+      }
 
     NeckShape<dim> shape;
     shape.point       = c1 + 0.5 * (c2 - c1);
