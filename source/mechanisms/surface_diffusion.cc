@@ -2,6 +2,24 @@
 
 namespace levelsinter
 {
+  namespace
+  {
+    template <int dim>
+    typename MixedCurvatureSolver<dim>::Settings
+    solver_settings(const SceneParameters::SurfaceDiffusion &parameters,
+                    const std::vector<types::boundary_id>   &symmetry_planes)
+    {
+      typename MixedCurvatureSolver<dim>::Settings settings;
+      settings.coupled = parameters.coupled;
+      settings.direct  = parameters.linear_solver ==
+                        SurfaceDiffusionParameters::LinearSolver::direct;
+      settings.tolerance           = parameters.solver_tolerance;
+      settings.max_iterations      = 1000;
+      settings.symmetry_boundaries = symmetry_planes;
+      return settings;
+    }
+  } // namespace
+
   template <int dim>
   SurfaceDiffusion<dim>::SurfaceDiffusion(
     const SceneParameters::SurfaceDiffusion &parameters,
@@ -10,15 +28,7 @@ namespace levelsinter
     const LevelSetFilter                    &filter,
     TimerOutput                             &timer)
     : mobility(parameters.surface_mobility() * seconds_per_time_unit)
-    , solver(filter,
-             {parameters.coupled,
-              parameters.linear_solver ==
-                SurfaceDiffusionParameters::LinearSolver::direct,
-              parameters.solver_tolerance,
-              1000,
-              false,
-              symmetry_planes},
-             timer)
+    , solver(filter, solver_settings<dim>(parameters, symmetry_planes), timer)
     , timer(timer)
   {}
 
