@@ -155,7 +155,7 @@ add_test(NAME viscous_static_bubble_2d_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS}
 # of doc/numerics.md ("Stokes preconditioner"): measured mean 23.4, max 24;
 # limits ~20 % above, so a weaker preconditioner fails.
 add_test(NAME viscous_hopper_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 5 --set "Time/End time=0.1"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5 --set "Time/End time=0.1"
   --max-neck-error 0.40 --max-area-drift 0.006
   --max-mean-stokes-its 30 --max-stokes-its 31)
 # Volume correction (Eq. 113-116) on the whole Hopper run at R/h = 10:
@@ -163,7 +163,7 @@ add_test(NAME viscous_hopper_2d COMMAND ${VISCOUS} hopper
 # 0.072 without it; the limits 1e-3 (what one step may lose) and 0.06 fail
 # without the correction.
 add_test(NAME viscous_hopper_volume_correction_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4
   --set "Volume correction/Enabled=true"
   --max-area-drift 0.001 --max-final-neck-error 0.06)
 # The iteration count must stay flat as h shrinks at the stiffest ratio
@@ -171,7 +171,7 @@ add_test(NAME viscous_hopper_volume_correction_2d COMMAND ${VISCOUS} hopper
 # per step: 19.1 / 20, 24.6 / 26, 25.9 / 27; limits 35 / 38 (1.35x and
 # 1.4x the R/h = 40 values).
 add_test(NAME viscous_solver_ratio_1e-6_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --set "Time/End time=0.1"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --set "Time/End time=0.1"
   --set "Viscous flow/Fluid viscosity=1e-6"
   --max-mean-stokes-its 35 --max-stokes-its 38)
 # The same at R/h = 80, first 13 steps (to t = 0.02), where ML's first
@@ -181,7 +181,7 @@ add_test(NAME viscous_solver_ratio_1e-6_2d COMMAND ${VISCOUS} hopper
 # viscosity into the far atmosphere and takes the count to 48.8 / 49.
 # Limits 29.5 / 30 (~8 % above).
 add_test(NAME viscous_solver_ratio_1e-6_r80_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 7 --set "Time/End time=0.02"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 7 --set "Time/End time=0.02"
   --set "Viscous flow/Fluid viscosity=1e-6"
   --max-mean-stokes-its 29.5 --max-stokes-its 30)
 # Curvature refinement at the neck (doc/validation.md, "Curvature
@@ -194,7 +194,7 @@ add_test(NAME viscous_solver_ratio_1e-6_r80_2d COMMAND ${VISCOUS} hopper
 # neck error (between the two); at least 100 fine cells, and none 1 R or
 # more from the neck, where the particles' round surface lies.
 add_test(NAME viscous_hopper_curvature_refinement_2d COMMAND ${VISCOUS}
-  hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 4 --set "Time/End time=0.1"
+  hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4 --set "Time/End time=0.1"
   --set "Mesh refinement/Curvature refinement levels=2"
   --max-final-neck-error 0.3 --min-fine-cells 100
   --max-fine-cell-distance 1.0)
@@ -202,7 +202,7 @@ add_test(NAME viscous_hopper_curvature_refinement_2d COMMAND ${VISCOUS}
 # each rank's part of the mesh give the same refinement at the neck.
 add_test(NAME viscous_hopper_curvature_refinement_2d_np2 COMMAND ${MPIRUN}
   ${MPIRUN_FLAGS} -np 2 ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4 --set "Time/End time=0.02"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4 --set "Time/End time=0.02"
   --set "Mesh refinement/Curvature refinement levels=2"
   --min-fine-cells 100 --max-fine-cell-distance 1.0)
 # The application runs the viscous scene (10 steps) and writes the
@@ -245,7 +245,7 @@ add_test(NAME viscous_static_bubble_curvature_2d_np2 COMMAND ${MPIRUN}
 # mesh over the long run; the explicit run at its stable dt: 9.6 %);
 # limit 10 %.
 add_test(NAME viscous_hopper_semi_implicit_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4 --dt-factor 10
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4 --dt-factor 10
   --set "Time/End time=2.5"
   --set "Viscous flow/Surface tension time integration=semi-implicit"
   --max-rejected 0 --max-area-drift 0.10)
@@ -255,28 +255,48 @@ add_test(NAME viscous_hopper_semi_implicit_2d COMMAND ${VISCOUS} hopper
 # first step, which is accepted; without the check the run loses 73 % of
 # its area by t = 2.5). Limits ~1.13x the measured values.
 add_test(NAME viscous_hopper_explicit_rejected_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4 --dt-factor 10
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4 --dt-factor 10
   --set "Time/End time=1" --min-rejected 1 --max-area-drift 0.08
   --max-neck-error 0.65)
 
 # The Stokes solution alone, on Hopper's exact shape at y_n = 0.2 R (R/h =
-# 20 in the band, 8 extra levels at the neck, one step of 1.25e-6): the
-# neck point's speed against Hopper's dy_n/dt. Measured +0.78 % on 1 and 2
-# ranks, +4.5 % with 6 levels: the limit 2 % separates the two.
+# 20 in the band, up to 10 extra levels at the neck where its curvature
+# radius, 2.1e-3 R, spans fewer than 16 cells; one step of 1.25e-6): the
+# neck point's speed against Hopper's dy_n/dt. Measured on 26 Nov 2026,
+# with the mesh refined on the exact shape from the start: +0.82 % (16
+# cells per curvature radius), +1.23 % (8), +2.19 % (4), +4.2 % with 6
+# levels at 4 cells. The limit 1.5 % asks for the resolved meniscus.
 add_test(NAME viscous_hopper_neck_speed_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 5
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
   --set "Geometry/Particles=-0.2449489743, 0, 0.25; 0.2449489743, 0, 0.25"
-  --set "Mesh refinement/Curvature refinement levels=8"
+  --set "Mesh refinement/Curvature refinement levels=10"
+  --set "Mesh refinement/Cells per curvature radius=16"
   --set "Time/End time=1.25e-6" --dt-factor 1e-4
-  --max-initial-neck-speed-error 0.02)
+  --max-initial-neck-speed-error 0.015)
 add_test(NAME viscous_hopper_neck_speed_2d_np2 COMMAND ${MPIRUN}
   ${MPIRUN_FLAGS} -np 2 ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 5
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
   --set "Geometry/Particles=-0.2449489743, 0, 0.25; 0.2449489743, 0, 0.25"
-  --set "Mesh refinement/Curvature refinement levels=8"
+  --set "Mesh refinement/Curvature refinement levels=10"
+  --set "Mesh refinement/Cells per curvature radius=16"
   --set "Time/End time=1.25e-6" --dt-factor 1e-4
-  --max-initial-neck-speed-error 0.02)
+  --max-initial-neck-speed-error 0.015)
 
+# Hopper's two cylinders at boundary-element accuracy (doc/validation.md,
+# "Hopper's two cylinders at boundary-element accuracy"): the default
+# scene, from Hopper's exact shape at t gamma/(eta R) = 0.2 to 0.7 (t =
+# 0.125, 155 steps, 11 s on 1 or 2 ranks). Measured on 26 Nov 2026: the
+# largest relative neck error 0.00381 on 1 and 2 ranks, area drift
+# 7.8e-8. Limits: 0.005, the issue's target at every time (30 % above the
+# measured value; over the whole run the error is 0.82 % without the volume
+# correction and 1.10 % with one curvature level less), and 1e-6 on the
+# drift (the correction's level; without it 1.1 % over the whole run).
+foreach(np 1 2)
+  add_test(NAME viscous_hopper_default_2d_np${np} COMMAND ${MPIRUN}
+    ${MPIRUN_FLAGS} -np ${np} ${VISCOUS} hopper
+    ${VISCOUS_SCENES}/two_cylinders_2d.prm 5 --set "Time/End time=0.125"
+    --max-neck-error-from-tau0.2 0.005 --max-area-drift 1e-6)
+endforeach()
 # The hopper mode writes and reads back viscous_validation_output/
 # hopper_levelN/metrics.csv: runs of it must not overlap.
 set_tests_properties(viscous_hopper_2d viscous_solver_ratio_1e-6_2d
@@ -284,7 +304,8 @@ set_tests_properties(viscous_hopper_2d viscous_solver_ratio_1e-6_2d
   viscous_hopper_volume_correction_2d viscous_hopper_semi_implicit_2d
   viscous_hopper_explicit_rejected_2d viscous_hopper_curvature_refinement_2d
   viscous_hopper_curvature_refinement_2d_np2 viscous_hopper_neck_speed_2d
-  viscous_hopper_neck_speed_2d_np2
+  viscous_hopper_neck_speed_2d_np2 viscous_hopper_default_2d_np1
+  viscous_hopper_default_2d_np2
   PROPERTIES RESOURCE_LOCK viscous_hopper_output)
 
 # The direct solver gives the same solution (measured at h = 1/32 with
@@ -368,7 +389,7 @@ set_tests_properties(viscous_solver_3d_r10 viscous_two_spheres_3d
   PROPERTIES RESOURCE_LOCK viscous_spheres_output)
 # A symmetry plane the box does not have is refused, naming the entry.
 bad_input_test(viscous_symmetry_plane "Viscous flow/Symmetry planes"
-  --set "Viscous flow/Symmetry planes=z-" ${VISCOUS_SCENES}/two_cylinders_2d.prm)
+  --set "Viscous flow/Symmetry planes=z-" ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm)
 # A Stokes solve that does not converge stops the run with a diagnosis.
 bad_input_test(viscous_no_convergence "FGMRES did not reach"
   --set "Viscous flow/Maximum solver iterations=2"

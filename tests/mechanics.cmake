@@ -47,4 +47,4 @@ set_tests_properties(mechanics_elastic_inclusion_2d
 # is refused with the entry named.
 bad_input_test(viscous_elastic_law "Phase law/Law"
   --set "Phase law/Law=elastic-solid"
-  ${INCLUSION_SCENES}/two_cylinders_2d.prm)
+  ${INCLUSION_SCENES}/two_cylinders_circles_2d.prm)

@@ -1,6 +1,6 @@
 # --- Scene parameters: cross-section checks, renamed entries (issue 14) ----
 set(TWO_PARTICLES ${CMAKE_SOURCE_DIR}/parameter_files/two_particles_2d.prm)
-set(CYLINDERS ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_2d.prm)
+set(CYLINDERS ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_circles_2d.prm)
 
 # A renamed entry still works: its value moves to the new entry, a warning
 # names both, and the run proceeds (2 steps of Hopper's scene).
@@ -55,3 +55,15 @@ set_tests_properties(parameters_particle_header_order PROPERTIES
 bad_input_test(particle_file_header
   "header_particles.csv', line 2: the header 'x,y,radius' must name"
   ${BAD}/bad_header.prm)
+
+# Shape = hopper: the two circles must be equal and overlap, and Hopper's
+# shape of them (longer than the circles) must fit the domain.
+set(HOPPER_SCENE ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_2d.prm)
+# (The circles come from a file: a ';' would split the test's argument list.)
+bad_input_test(hopper_shape_unequal_radii "exactly two particles of the same radius"
+  --set "Geometry/Particles=" --set
+  "Geometry/Particle file=${CMAKE_CURRENT_SOURCE_DIR}/hygiene/particles_2d.csv"
+  ${HOPPER_SCENE})
+bad_input_test(hopper_shape_outside "outside the domain"
+  --set "Domain/Lower corner=-0.49, 0" --set "Domain/Upper corner=0.49, 0.8"
+  ${HOPPER_SCENE})

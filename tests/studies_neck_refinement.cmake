@@ -9,14 +9,14 @@
 set(NECK_001R "Geometry/Particles=-0.2499875, 0, 0.25; 0.2499875, 0, 0.25")
 foreach(k 0 1 2)
   add_test(NAME study_neckref_hopper_k${k}_2d COMMAND ${VISCOUS} hopper
-    ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6
+    ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6
     --set "Mesh refinement/Curvature refinement levels=${k}"
     --csv neckref_hopper_k${k}.csv)
   list(APPEND NECKREF_HOPPER study_neckref_hopper_k${k}_2d)
 endforeach()
 foreach(k 0 2)
   add_test(NAME study_neckref_hopper_001R_k${k}_2d COMMAND ${VISCOUS} hopper
-    ${VISCOUS_SCENES}/two_cylinders_2d.prm 5,6 --set "${NECK_001R}"
+    ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5,6 --set "${NECK_001R}"
     --set "Mesh refinement/Curvature refinement levels=${k}"
     --csv neckref_hopper_001R_k${k}.csv)
   list(APPEND NECKREF_HOPPER study_neckref_hopper_001R_k${k}_2d)
@@ -37,7 +37,7 @@ foreach(y 0.01 0.05 0.1 0.2)
   endif()
   foreach(k 0 2 4 6 8 10)
     add_test(NAME study_hopper_neck_speed_y${y}_k${k}_2d COMMAND ${VISCOUS}
-      hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 5
+      hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
       --set "Geometry/Particles=-${c}, 0, 0.25; ${c}, 0, 0.25"
       --set "Mesh refinement/Curvature refinement levels=${k}"
       --set "Time/End time=1.25e-6" --dt-factor 1e-4

@@ -10,24 +10,24 @@ add_test(NAME study_viscous_bubble_narrow_2d COMMAND ${VISCOUS} bubble
   --set "Viscous flow/Interface half width=0.5"
   --csv viscous_bubble_narrow_2d.csv)
 add_test(NAME study_viscous_hopper_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --csv viscous_hopper_2d.csv)
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --csv viscous_hopper_2d.csv)
 # Semi-implicit surface tension at 10x the explicit capillary limit against
 # the explicit form at the limit (fixed dt both), to t gamma/(eta R) = 2.06.
 add_test(NAME study_viscous_hopper_semi_implicit_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --dt-factor 10
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --dt-factor 10
   --set "Viscous flow/Surface tension time integration=semi-implicit"
   --csv viscous_hopper_semi_implicit_2d.csv)
 add_test(NAME study_viscous_hopper_explicit_fixed_dt_2d COMMAND ${VISCOUS}
-  hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --dt-factor 1
+  hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --dt-factor 1
   --csv viscous_hopper_explicit_fixed_dt_2d.csv)
 # Work-precision: the same levels at a half and a double time step (CFL
 # 0.25 and 1; the scene's is 0.5). At CFL 1 the band must hold the 5 * 1
 # cells the interface may move between adaptations plus one: 6.5 cells.
 add_test(NAME study_viscous_hopper_cfl0.25_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --set "Time/CFL number=0.25"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --set "Time/CFL number=0.25"
   --csv viscous_hopper_2d_cfl0.25.csv)
 add_test(NAME study_viscous_hopper_cfl1_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6 --set "Time/CFL number=1"
+  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6 --set "Time/CFL number=1"
   --band-cells 6.5 --csv viscous_hopper_2d_cfl1.csv)
 set_tests_properties(study_viscous_hopper_cfl0.25_2d
   study_viscous_hopper_cfl1_2d PROPERTIES LABELS validation-long)
@@ -44,7 +44,7 @@ endforeach()
 # "Solver"): Hopper to t = 0.1 at R/h = 10, 20, 40, 80, 160.
 foreach(ratio 1 1e-3 1e-6)
   add_test(NAME study_viscous_solver_ratio_${ratio}_2d COMMAND ${VISCOUS}
-    hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6,7,8
+    hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6,7,8
     --set "Time/End time=0.1" --set "Viscous flow/Fluid viscosity=${ratio}"
     --csv viscous_solver_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_solver_ratio_${ratio}_2d)
@@ -53,7 +53,7 @@ endforeach()
 # "Solver").
 foreach(ratio 1 1e-6)
   add_test(NAME study_viscous_solver_t002_ratio_${ratio}_2d COMMAND ${VISCOUS}
-    hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6,7,8,9
+    hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6,7,8,9
     --set "Time/End time=0.02" --set "Viscous flow/Fluid viscosity=${ratio}"
     --csv viscous_solver_t002_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_solver_t002_ratio_${ratio}_2d)
@@ -62,7 +62,7 @@ endforeach()
 # explicit capillary step, R/h = 10, 20, 40, to t = 0.5.
 foreach(factor 1 10)
   add_test(NAME study_viscous_solver_semi_implicit_dt${factor}_2d
-    COMMAND ${VISCOUS} hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 4,5,6
+    COMMAND ${VISCOUS} hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6
     --dt-factor ${factor} --set "Time/End time=0.5"
     --set "Viscous flow/Surface tension time integration=semi-implicit"
     --csv viscous_solver_semi_implicit_dt${factor}.csv)
@@ -71,7 +71,7 @@ endforeach()
 # The whole Hopper run at the stiff ratio 1e-6 and at 1e-3, R/h = 20.
 foreach(ratio 1e-3 1e-6)
   add_test(NAME study_viscous_hopper_ratio_${ratio}_2d COMMAND ${VISCOUS}
-    hopper ${VISCOUS_SCENES}/two_cylinders_2d.prm 5
+    hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
     --set "Viscous flow/Fluid viscosity=${ratio}"
     --csv viscous_hopper_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_hopper_ratio_${ratio}_2d)
@@ -129,3 +129,38 @@ set_tests_properties(study_viscous_hopper_2d
   study_viscous_hopper_cfl1_2d ${VISCOUS_STUDIES} PROPERTIES
   RESOURCE_LOCK viscous_hopper_output)
 
+
+# Hopper's two cylinders at boundary-element accuracy (doc/validation.md):
+# the default scene (Hopper's exact shape at t gamma/(eta R) = 0.2, R/h =
+# 20 + 4 curvature levels, capillary step factor 2, CFL 1, volume
+# correction) to t gamma/(eta R) = 2.06 on 2 ranks, the old default, and
+# one change at a time for the error budget. Each writes
+# doc/validation_data/hopper_accuracy_NAME.csv and its .level5/6.csv.
+function(hopper_accuracy name scene level)
+  add_test(NAME study_hopper_accuracy_${name}_2d COMMAND ${MPIRUN}
+    ${MPIRUN_FLAGS} -np 2 ${VISCOUS} hopper ${VISCOUS_SCENES}/${scene}
+    ${level} --samples 23 ${ARGN}
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/hopper_accuracy_${name}.csv)
+  set_tests_properties(study_hopper_accuracy_${name}_2d PROPERTIES
+    LABELS validation-long RESOURCE_LOCK viscous_hopper_output)
+endfunction()
+hopper_accuracy(default two_cylinders_2d.prm 5)
+hopper_accuracy(old_default two_cylinders_circles_2d.prm 6 --circle-start 1)
+hopper_accuracy(circle_start two_cylinders_2d.prm 5 --circle-start 1
+  --set "Geometry/Shape=particles")
+hopper_accuracy(no_volume_correction two_cylinders_2d.prm 5
+  --set "Volume correction/Enabled=false")
+foreach(k 2 3)
+  hopper_accuracy(k${k} two_cylinders_2d.prm 5
+    --set "Mesh refinement/Curvature refinement levels=${k}")
+endforeach()
+hopper_accuracy(band40_k3 two_cylinders_2d.prm 6
+  --set "Mesh refinement/Curvature refinement levels=3")
+hopper_accuracy(capillary1_cfl0.5 two_cylinders_2d.prm 5
+  --set "Viscous flow/Capillary time step factor=1"
+  --set "Time/CFL number=0.5")
+hopper_accuracy(capillary3_cfl1.5 two_cylinders_2d.prm 5
+  --set "Viscous flow/Capillary time step factor=3"
+  --set "Time/CFL number=1.5" --set "Mesh refinement/Adapt interval=1")
+hopper_accuracy(semi_implicit_cfl1 two_cylinders_2d.prm 5
+  --set "Viscous flow/Surface tension time integration=semi-implicit")

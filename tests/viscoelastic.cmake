@@ -78,14 +78,14 @@ set(HOPPER_FIXED_STEP --overwrite --set "Time/End time=0.05"
   --set "Output/Field formats=none" --set "Output/Metrics interval=1")
 add_test(NAME viscoelastic_newtonian_reference_2d
   COMMAND $<TARGET_FILE:levelsinter> ${HOPPER_FIXED_STEP}
-    --set "Output/Directory=ve_newtonian" ${VISCOUS_SCENES}/two_cylinders_2d.prm)
+    --set "Output/Directory=ve_newtonian" ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm)
 add_test(NAME viscoelastic_newtonian_limit_2d
   COMMAND $<TARGET_FILE:levelsinter> ${HOPPER_FIXED_STEP}
     --set "Output/Directory=ve_limit" --set "Phase law/Law=giesekus"
     --set "Viscous flow/Solid viscosity=0.01"
     --set "Phase law/Polymer viscosity=0.99"
     --set "Phase law/Relaxation time=1e-6"
-    ${VISCOUS_SCENES}/two_cylinders_2d.prm)
+    ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm)
 set_tests_properties(viscoelastic_newtonian_reference_2d PROPERTIES
   FIXTURES_SETUP ve_newtonian)
 set_tests_properties(viscoelastic_newtonian_limit_2d PROPERTIES

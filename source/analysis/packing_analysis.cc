@@ -31,7 +31,7 @@ namespace levelsinter
   template <int dim>
   PackingAnalysis<dim>::PackingAnalysis(const SceneParameters &scene,
                                         const MPI_Comm         comm)
-    : particles(scene.geometry.shape == GeometryParameters::Shape::particles ?
+    : particles(scene.geometry.particles_are_bodies() ?
                   scene.geometry.particles :
                   std::vector<std::vector<double>>())
     , symmetry_boundaries(scene.domain.symmetry_planes)

@@ -1,4 +1,5 @@
 #include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/scene/hopper.h>
 #include <levelsinter/scene/solid_geometry.h>
 
 #include <algorithm>
@@ -322,13 +323,28 @@ namespace levelsinter
       }
     if constexpr (dim == 2)
       {
+        if (g.shape == GeometryParameters::Shape::hopper)
+          {
+            // The circles' overlap gives the neck (checked when parsed).
+            const auto        &p = g.particles;
+            const double       R = p[0][2];
+            const Tensor<1, 2> axis({p[1][0] - p[0][0], p[1][1] - p[0][1]});
+            const double       c = axis.norm() / 2;
+            const Hopper       hopper(R);
+            return std::make_unique<HopperSignedDistance>(
+              R,
+              hopper.m_of_neck(std::sqrt(R * R - c * c)),
+              Point<2>((p[0][0] + p[1][0]) / 2, (p[0][1] + p[1][1]) / 2),
+              axis);
+          }
         return std::make_unique<SlottedDisk>(
           Point<2>(g.slotted_disk_centre[0], g.slotted_disk_centre[1]),
           g.slotted_disk_radius,
           g.slot_width,
           g.slot_depth);
       }
-    throw std::invalid_argument("the slotted disk exists in 2D only");
+    throw std::invalid_argument(
+      "the slotted disk and Hopper's shape exist in 2D only");
   }
 
   template std::unique_ptr<Function<2>>

@@ -1,4 +1,5 @@
 #include <levelsinter/scene/geometry_parameters.h>
+#include <levelsinter/scene/hopper.h>
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/particles.h>
 #include <levelsinter/scene/solid_geometry.h>
@@ -7,6 +8,76 @@
 
 namespace levelsinter
 {
+  namespace
+  {
+    // Shape = hopper: two equal overlapping circles in 2D, and Hopper's
+    // shape of them inside the domain.
+    void
+    check_hopper_pair(const std::vector<std::vector<double>> &particles,
+                      const unsigned int                      d,
+                      const bool                              axisymmetric,
+                      const DomainParameters                 &domain)
+    {
+      if (d != 2 || axisymmetric)
+        fail_entry("Geometry/Shape",
+                   "'hopper' is the plane shape of two cylinders: it needs "
+                   "'Dimension = 2' without 'Axisymmetric'");
+      if (particles.size() != 2 || particles[0][2] != particles[1][2])
+        fail_entry("Geometry/Particles",
+                   "Shape = hopper needs exactly two particles of the same "
+                   "radius");
+      const double       R = particles[0][2];
+      const Tensor<1, 2> axis({particles[1][0] - particles[0][0],
+                               particles[1][1] - particles[0][1]});
+      const double       c = axis.norm() / 2;
+      if (!(c > 0 && c < R))
+        fail_entry("Geometry/Particles",
+                   "Shape = hopper: the two circles must overlap (centre "
+                   "distance between 0 and 2 r): their overlap gives the "
+                   "neck");
+      const Hopper   hopper(R);
+      const double   m = hopper.m_of_neck(std::sqrt(R * R - c * c));
+      const Point<2> centre((particles[0][0] + particles[1][0]) / 2,
+                            (particles[0][1] + particles[1][1]) / 2);
+      const Tensor<1, 2> e = axis / (2 * c);
+      // The shape is symmetric about its line of centres and its neck
+      // line: if they lie along the axes, it may cross a face through its
+      // centre (a symmetry plane).
+      const bool  aligned = std::abs(e[0] * e[1]) < 1e-12;
+      const auto &lo = domain.lower_corner, &hi = domain.upper_corner;
+      for (const Point<2> &q : hopper.boundary(m, 720))
+        {
+          const Point<2> x(centre[0] + e[0] * q[0] - e[1] * q[1],
+                           centre[1] + e[1] * q[0] + e[0] * q[1]);
+          for (unsigned int k = 0; k < 2; ++k)
+            {
+              const double tol     = 1e-12 * (hi[k] - lo[k]);
+              const auto   on_face = [&](const double face) {
+                return aligned && std::abs(centre[k] - face) <= tol;
+              };
+              if ((x[k] < lo[k] - tol && !on_face(lo[k])) ||
+                  (x[k] > hi[k] + tol && !on_face(hi[k])))
+                {
+                  std::ostringstream point;
+                  point << x[0] << ", " << x[1];
+                  fail_entry("Geometry/Particles",
+                             "Shape = hopper: Hopper's shape of these "
+                             "circles reaches (" +
+                               point.str() +
+                               ") outside the domain (the shape is longer "
+                               "than the two circles)");
+                }
+            }
+        }
+    }
+  } // namespace
+
+  bool
+  GeometryParameters::particles_are_bodies() const
+  {
+    return shape == Shape::particles || shape == Shape::hopper;
+  }
+
   void
   GeometryParameters::declare(ParameterHandler &prm)
   {
@@ -15,9 +86,14 @@ namespace levelsinter
       prm.declare_entry(
         "Shape",
         "particles",
-        Patterns::Selection("particles|slotted disk|perturbed particle"),
+        Patterns::Selection("particles|slotted disk|perturbed particle|"
+                            "hopper"),
         "What the solid is at t = 0: the union of the particles, "
-        "Zalesak's slotted disk (2D only; for the transport benchmark), or "
+        "Zalesak's slotted disk (2D only; for the transport benchmark), "
+        "Hopper's exact shape of two coalescing cylinders (2D only: the "
+        "two equal circles of 'Particles' give the radius R, the centre, "
+        "the line of centres and the neck half-width, that of their "
+        "overlap; viscous sintering from an exact start), or "
         "the first particle with its radius modulated by one mode "
         "(r = R(1 + delta cos n theta) in 2D, R(1 + delta P_n(cos theta)) "
         "in 3D and on an axisymmetric scene, theta from the z axis or the "
@@ -148,7 +224,8 @@ namespace levelsinter
       "Shape",
       {{"particles", Shape::particles},
        {"slotted disk", Shape::slotted_disk},
-       {"perturbed particle", Shape::perturbed_particle}});
+       {"perturbed particle", Shape::perturbed_particle},
+       {"hopper", Shape::hopper}});
     particles =
       parse_inline_particles(prm.get("Particles"), d, "Geometry/Particles");
     particle_file = prm.get("Particle file");
@@ -251,6 +328,12 @@ namespace levelsinter
     if (shape == Shape::perturbed_particle && particles.size() != 1)
       fail_entry("Geometry/Particles",
                  "Shape = perturbed particle needs exactly one particle");
+    if (shape == Shape::hopper)
+      {
+        // The circles only give the pair: the solid is Hopper's shape.
+        check_hopper_pair(particles, d, axisymmetric, domain);
+        return;
+      }
     if (shape == Shape::slotted_disk)
       {
         if (d != 2)

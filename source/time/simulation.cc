@@ -286,7 +286,7 @@ namespace levelsinter
     if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
       {
         packing_analysis = std::make_unique<PackingAnalysis<dim>>(scene, comm);
-        if (scene.geometry.shape == GeometryParameters::Shape::particles &&
+        if (scene.geometry.particles_are_bodies() &&
             particles.size() >= 2)
           particle_centres = std::make_unique<ParticleCentres<dim>>(
             particles, scene.domain, comm);
@@ -517,7 +517,7 @@ namespace levelsinter
         // The neck of two particles; in a packing the smallest neck over
         // the pairs that overlap at t = 0 (the packing analysis' necks if
         // it ran: the same pairs).
-        if (scene.geometry.shape == GeometryParameters::Shape::particles &&
+        if (scene.geometry.particles_are_bodies() &&
             particles.size() >= 2)
           {
             const double neck =
@@ -559,7 +559,7 @@ namespace levelsinter
         row.insert(row.end(), packing_row.begin(), packing_row.end());
         // Densification: the approach of the particle centres.
         if (packing_analysis &&
-            scene.geometry.shape == GeometryParameters::Shape::particles &&
+            scene.geometry.particles_are_bodies() &&
             particles.size() >= 2)
           {
             TimerOutput::Scope scope(timer_output, "packing analysis");

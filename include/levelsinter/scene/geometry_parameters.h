@@ -21,7 +21,10 @@ namespace levelsinter
       slotted_disk,
       // The first particle, radius modulated by one mode (Mullins test of
       // surface diffusion).
-      perturbed_particle
+      perturbed_particle,
+      // Hopper's exact coalescence shape with the neck of the two equal
+      // circles of `Particles` (2D).
+      hopper
     };
 
     static void
@@ -37,6 +40,13 @@ namespace levelsinter
           const unsigned int      dimension,
           const std::string      &scene_directory,
           const DomainParameters &domain);
+
+    /**
+     * Whether the particles are the bodies whose necks and centres the
+     * metrics follow (Shape = particles or hopper).
+     */
+    bool
+    particles_are_bodies() const;
 
     Shape shape = Shape::particles;
     // A 2D scene that stands for a body of revolution about x = 0 (x = r,

@@ -1,6 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
-#include <levelsinter/analysis/hopper.h>
+#include <levelsinter/scene/hopper.h>
 
 #include <algorithm>
 #include <cmath>
@@ -105,29 +105,73 @@ namespace levelsinter
              ((1 + m) * (1 + m) * x2 + (1 - m) * (1 - m) * y2);
   }
 
-  HopperLevelSet::HopperLevelSet(const Hopper         &hopper,
-                                 const double          m,
-                                 const LevelSetFilter &filter)
-    : m(m)
-    , hopper(hopper)
-    , points(hopper.boundary(m, 20000))
-    , filter(filter)
-  {}
+  namespace
+  {
+    double
+    squared_distance_to_segment(const Point<2> &p,
+                                const Point<2> &a,
+                                const Point<2> &b)
+    {
+      const Tensor<1, 2> ab = b - a;
+      const double       s = std::clamp((p - a) * ab / ab.norm_square(), 0., 1.);
+      return (p - (a + s * ab)).norm_square();
+    }
+
+    // Sides of the fine polygon per side of the coarse one that the search
+    // looks at first.
+    constexpr unsigned int chunk = 40;
+  } // namespace
+
+  HopperSignedDistance::HopperSignedDistance(const double        R,
+                                             const double        m,
+                                             const Point<2>     &centre,
+                                             const Tensor<1, 2> &axis)
+    : hopper(R)
+    , m(m)
+    , centre(centre)
+    , axis(axis / axis.norm())
+    , points(hopper.boundary(m, 500 * chunk))
+    , deviation(500)
+  {
+    for (unsigned int c = 0; c < deviation.size(); ++c)
+      for (unsigned int i = c * chunk; i <= (c + 1) * chunk; ++i)
+        deviation[c] = std::max(
+          deviation[c],
+          std::sqrt(squared_distance_to_segment(points[i % points.size()],
+                                                coarse_vertex(c),
+                                                coarse_vertex(c + 1))));
+  }
+
+  const Point<2> &
+  HopperSignedDistance::coarse_vertex(const unsigned int c) const
+  {
+    return points[(c * chunk) % points.size()];
+  }
 
   double
-  HopperLevelSet::value(const Point<2> &p, const unsigned int) const
+  HopperSignedDistance::value(const Point<2> &x, const unsigned int) const
   {
+    // x in the shape's own frame: the line of centres along the first axis.
+    const Tensor<1, 2> r = x - centre;
+    const Point<2>     p(r * axis, axis[0] * r[1] - axis[1] * r[0]);
+    // The fine polygon lies within deviation[c] of coarse side c, so only
+    // the coarse sides nearer than the nearest coarse vertex (a vertex of
+    // the fine polygon too) by that much can hold the nearest point.
     double d2 = std::numeric_limits<double>::max();
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const Point<2>     &a  = points[i];
-        const Point<2>     &b  = points[(i + 1) % points.size()];
-        const Tensor<1, 2>  ab = b - a;
-        const double        s =
-          std::clamp((p - a) * ab / ab.norm_square(), 0., 1.);
-        d2 = std::min(d2, (p - (a + s * ab)).norm_square());
-      }
+    for (unsigned int c = 0; c < deviation.size(); ++c)
+      d2 = std::min(d2, (p - coarse_vertex(c)).norm_square());
+    const double upper = std::sqrt(d2);
+    for (unsigned int c = 0; c < deviation.size(); ++c)
+      if (std::sqrt(squared_distance_to_segment(p,
+                                                coarse_vertex(c),
+                                                coarse_vertex(c + 1))) -
+            deviation[c] <=
+          upper)
+        for (unsigned int i = c * chunk; i < (c + 1) * chunk; ++i)
+          d2 = std::min(d2,
+                        squared_distance_to_segment(
+                          p, points[i], points[(i + 1) % points.size()]));
     const double d = std::sqrt(d2);
-    return filter.filter(hopper.implicit(m, p) <= 0 ? -d : d);
+    return hopper.implicit(m, p) <= 0 ? -d : d;
   }
 } // namespace levelsinter
