@@ -957,12 +957,12 @@ namespace
   // curvature and, for a viscoelastic melt, tr c at the neck and its
   // largest value anywhere; the table has the neck at a few times, the
   // curvature's peak and the largest tr c at the neck.
+  template <int dim>
   void
   neck_history(const std::string              &scene_file,
                const std::vector<unsigned int> &levels,
                const Options                   &options)
   {
-    constexpr int             dim   = 2;
     const std::vector<double> times = {0.001, 0.01, 0.05, 0.1, 0.2};
     std::vector<std::string>  columns = time_columns("neck_t", times);
     columns.insert(columns.end(),
@@ -1138,7 +1138,12 @@ main(int argc, char **argv)
       else if (args[0] == "coalescence")
         coalescence(args[1], levels, parse_options(args, 3));
       else if (args[0] == "neck-history")
-        neck_history(args[1], levels, parse_options(args, 3));
+        {
+          if (read_scene(args[1], {}).dimension == 2)
+            neck_history<2>(args[1], levels, parse_options(args, 3));
+          else
+            neck_history<3>(args[1], levels, parse_options(args, 3));
+        }
       else if (args[0] == "bubble-time")
         bubble_time(args[1], levels, parse_options(args, 3));
       else if (args[0] == "hopper-reference")

@@ -263,9 +263,10 @@ namespace levelsinter::neck_measures
     const double slope = std::sqrt(1 + b * b);
     // Eq. 45-47 of the viscoelastic seed: 1/R1 + 1/R2 with R1 = (1 +
     // r'^2)^(3/2) / r'' (the profile) and, about the axis, R2 = -r (1 +
-    // r'^2)^(1/2) (the hoop, 3D only: 2D cylinders have none).
+    // r'^2)^(1/2) (the hoop, in 3D and on an axisymmetric scene: 2D
+    // cylinders have none).
     shape.curvature = 2 * c / (slope * slope * slope);
-    if (dim == 3)
+    if (dim == 3 || level_set.measure().is_axisymmetric())
       shape.curvature -= 1 / (a * slope);
     return shape;
   }

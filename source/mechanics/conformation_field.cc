@@ -38,7 +38,8 @@ namespace levelsinter
         , face_quadrature(2)
         , values(fe,
                  quadrature,
-                 update_values | update_gradients | update_JxW_values)
+                 update_values | update_gradients | update_JxW_values |
+                   update_quadrature_points)
         , velocity_values(velocity.fe(),
                           quadrature,
                           update_values | update_gradients)
@@ -100,9 +101,11 @@ namespace levelsinter
 
   template <int dim>
   ConformationField<dim>::ConformationField(const DoFHandler<dim>   &dofs,
-                                            const ConformationModel &model)
+                                            const ConformationModel &model,
+                                            const SceneMeasure      &measure)
     : model(model)
     , dofs(dofs)
+    , measure(measure)
     , fe(1)
     , comm(dofs.get_communicator())
   {}
@@ -202,7 +205,8 @@ namespace levelsinter
   void
   ConformationField<dim>::stress_values(
     const FEValues<dim>                  &values,
-    std::vector<SymmetricTensor<2, dim>> &stress) const
+    std::vector<SymmetricTensor<2, dim>> &stress,
+    std::vector<double>                  &hoop_stress) const
   {
     const auto          list = components();
     const unsigned int  n_q  = values.n_quadrature_points;
@@ -215,12 +219,14 @@ namespace levelsinter
           log_c[q][list[k].first][list[k].second] = s_q[q];
       }
     stress.resize(n_q);
+    hoop_stress.resize(n_q);
     for (unsigned int q = 0; q < n_q; ++q)
       {
         const SymmetricTensor<2, 3> tau = model.stress(tensor_exp(log_c[q]));
         for (unsigned int i = 0; i < dim; ++i)
           for (unsigned int j = i; j < dim; ++j)
             stress[q][i][j] = tau[i][j];
+        hoop_stress[q] = tau[2][2];
       }
   }
 
@@ -284,7 +290,8 @@ namespace levelsinter
                                        const double               dt,
                                        const std::vector<Vector> &old,
                                        const std::vector<Vector> &stage,
-                                       const bool average) const
+                                       const bool                 average,
+                                       const Vector *stretch_weight) const
   {
     const auto             list = components();
     const unsigned int                   m = list.size();
@@ -300,6 +307,7 @@ namespace levelsinter
       s_face(m, std::vector<double>(face.n_quadrature_points));
     std::vector<std::vector<Tensor<1, dim>>> grad_s_old(
       m, std::vector<Tensor<1, dim>>(n_q));
+    std::vector<double> weight(n_q, 1.);
 
     std::vector<Vector> rhs(m);
     for (Vector &r : rhs)
@@ -324,16 +332,20 @@ namespace levelsinter
               values.get_function_values(stage[k], s_stage[k]);
               cell_rhs[k] = 0;
             }
+          if (stretch_weight)
+            values.get_function_values(*stretch_weight, weight);
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const Tensor<1, dim> &v = scratch.v[q];
-              const Tensor<2, 3>    l =
-                embed_velocity_gradient<dim>(scratch.grad_v[q]);
+              Tensor<2, 3> l = embed_velocity_gradient<dim>(scratch.grad_v[q]);
+              l[2][2] +=
+                v[0] * measure.inverse_radius(values.quadrature_point(q));
               SymmetricTensor<2, 3> source =
                 model.log_deformation_rate(log_tensor(s_stage, q), l);
               if (average)
                 source = 0.5 * (source + model.log_deformation_rate(
                                            log_tensor(s_old, q), l));
+              source *= weight[q];
               for (unsigned int k = 0; k < m; ++k)
                 {
                   const double old_part =
@@ -446,7 +458,8 @@ namespace levelsinter
   template <int dim>
   unsigned int
   ConformationField<dim>::advance(const VelocityField<dim> &velocity,
-                                  const double              dt)
+                                  const double              dt,
+                                  const Vector             *stretch_weight)
   {
     assemble_matrix(velocity, dt);
     // Strang splitting: half a step of relaxation at the nodes, the
@@ -454,10 +467,11 @@ namespace levelsinter
     // is Heun: a predictor with the old source, then the average of the
     // old and the predicted source (the operator is the same).
     const std::vector<Vector> start = relaxed(state, dt / 2);
-    std::vector<Vector> rhs = assemble_rhs(velocity, dt, start, start, false);
+    std::vector<Vector> rhs =
+      assemble_rhs(velocity, dt, start, start, false, stretch_weight);
     std::vector<Vector> predicted;
     unsigned int        iterations = solve(rhs, predicted);
-    rhs        = assemble_rhs(velocity, dt, start, predicted, true);
+    rhs = assemble_rhs(velocity, dt, start, predicted, true, stretch_weight);
     std::vector<Vector> transported;
     iterations = std::max(iterations, solve(rhs, transported));
     advanced   = relaxed(transported, dt / 2);

@@ -25,8 +25,10 @@ namespace levelsinter
                                   const MaterialState<dim> &state) const
   {
     HistoryTerms<dim> terms;
-    terms.stress          = 2 * G * f.solid * state.old_strain;
-    terms.dilatation_rate = -f.solid * trace(state.old_strain) / dt;
+    terms.stress      = 2 * G * f.solid * state.old_strain;
+    terms.hoop_stress = 2 * G * f.solid * state.old_hoop_strain;
+    terms.dilatation_rate =
+      -f.solid * (trace(state.old_strain) + state.old_hoop_strain) / dt;
     return terms;
   }
 
@@ -50,7 +52,9 @@ namespace levelsinter
                                    const MaterialState<dim> &state) const
   {
     HistoryTerms<dim> terms;
-    terms.stress = lambda / (lambda + dt) * f.solid * state.polymer_stress;
+    const double memory = lambda / (lambda + dt) * f.solid;
+    terms.stress        = memory * state.polymer_stress;
+    terms.hoop_stress   = memory * state.polymer_hoop_stress;
     return terms;
   }
 

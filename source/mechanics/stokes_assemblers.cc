@@ -106,16 +106,20 @@ namespace levelsinter
             }
 
         // The law's memory (elastic solid, Eq. 93-94): -sigma_hist : grad
-        // w, and div v + c_p p = r in the (negated) continuity rows.
+        // w (with sigma_thth w_r / r on an axisymmetric scene), and
+        // div v + c_p p = r in the (negated) continuity rows.
         const HistoryTerms<dim> &history = data.history[k];
-        if (history.stress.norm() != 0 || history.dilatation_rate != 0)
+        if (history.stress.norm() != 0 || history.hoop_stress != 0 ||
+            history.dilatation_rate != 0)
           {
             for (const unsigned int i : velocity_dofs)
               {
                 Tensor<1, dim> stress_row;
                 for (unsigned int d = 0; d < dim; ++d)
                   stress_row[d] = history.stress[data.component[i]][d];
-                cell.rhs(i) -= stress_row * g[i] * JxW;
+                cell.rhs(i) -=
+                  (stress_row * g[i] + history.hoop_stress * data.hoop(k, i)) *
+                  JxW;
               }
             for (const unsigned int p : pressure_dofs)
               cell.rhs(p) -= history.dilatation_rate * q[p] * JxW;

@@ -329,7 +329,9 @@ namespace levelsinter
     std::vector<double>                  kappa_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> old_strain_q(quadrature.size());
+    std::vector<Tensor<1, dim>>          old_displacement_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> polymer_stress_q(quadrature.size());
+    std::vector<double>                  polymer_hoop_q(quadrature.size());
     const bool history        = phase_law.has_history();
     const bool polymer_stress = phase_law.has_polymer_stress();
     if (polymer_stress &&
@@ -410,11 +412,16 @@ namespace levelsinter
           if (history)
             {
               old_strain_q.resize(n_q);
+              old_displacement_q.resize(n_q);
               values[velocity].get_function_symmetric_gradients(
                 old_displacement, old_strain_q);
+              values[velocity].get_function_values(old_displacement,
+                                                   old_displacement_q);
             }
           if (polymer_stress)
-            conformation->stress_values(level_set_values, polymer_stress_q);
+            conformation->stress_values(level_set_values,
+                                        polymer_stress_q,
+                                        polymer_hoop_q);
           // The Schur approximation weighs the pressure mass with the
           // cell-mean viscosity (Grinevich & Olshanskii 2009): with the
           // pointwise 1/eta of the smeared interface the outer iterations
@@ -427,11 +434,21 @@ namespace levelsinter
                 1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
               data.law[k] = phase_law.coefficients(fractions);
               if (history || polymer_stress)
-                data.history[k] = phase_law.history(
-                  fractions,
-                  {history ? old_strain_q[k] : SymmetricTensor<2, dim>(),
-                   polymer_stress ? polymer_stress_q[k] :
-                                    SymmetricTensor<2, dim>()});
+                {
+                  MaterialState<dim> state;
+                  if (history)
+                    {
+                      state.old_strain = old_strain_q[k];
+                      state.old_hoop_strain =
+                        old_displacement_q[k][0] * data.inverse_radius[k];
+                    }
+                  if (polymer_stress)
+                    {
+                      state.polymer_stress      = polymer_stress_q[k];
+                      state.polymer_hoop_stress = polymer_hoop_q[k];
+                    }
+                  data.history[k] = phase_law.history(fractions, state);
+                }
               data.a1_cell += data.law[k].a1 / n_q;
               data.tau[k] = settings.stabilisation_constant * data.law[k].a2 *
                             h * h / data.law[k].a1;

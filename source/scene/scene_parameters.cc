@@ -244,10 +244,12 @@ namespace levelsinter
           fail_entry("Volume diffusion/Enabled",
                      "is not available with 'Geometry/Axisymmetric = true' "
                      "yet; run the scene in 3D");
-        if (phase_law.law != PhaseLawParameters::Law::newtonian)
+        if (phase_law.law == PhaseLawParameters::Law::elastic_solid)
           fail_entry("Phase law/Law",
-                     "must be 'newtonian' with 'Geometry/Axisymmetric = "
-                     "true' (the other laws have no hoop terms yet)");
+                     "'elastic-solid' is not available with "
+                     "'Geometry/Axisymmetric = true' yet (it serves volume "
+                     "diffusion, which is not axisymmetric); run the scene "
+                     "in 3D");
         if (viscous_flow.enabled &&
             viscous_flow.surface_tension_form ==
               ViscousFlowParameters::SurfaceTensionForm::csf_curvature)

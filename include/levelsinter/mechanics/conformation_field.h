@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <levelsinter/level_set/scene_measure.h>
 #include <levelsinter/level_set/state_transfer.h>
 #include <levelsinter/level_set/velocity_field.h>
 #include <levelsinter/mechanics/conformation_model.h>
@@ -33,7 +34,10 @@ namespace levelsinter
    * ConformationModel::relax_log()) around the transport, Crank-Nicolson
    * with SUPG (one matrix for all components) with the deformation terms
    * explicit in a two-stage Heun step; second order. At inflow boundaries
-   * c = I is imposed weakly.
+   * c = I is imposed weakly. On an axisymmetric scene the third axis is the
+   * hoop direction: the velocity gradient has L_thth = v_r / r, and the
+   * transport of the components is that of scalars (no swirl, so the
+   * cylindrical basis adds no terms).
    */
   template <int dim>
   class ConformationField
@@ -42,8 +46,11 @@ namespace levelsinter
     using Vector = TrilinosWrappers::MPI::Vector;
 
     /** @p dofs: a scalar Q1 DoFHandler (the level set's in a scene), on
-     * which the field lives. */
-    ConformationField(const DoFHandler<dim> &dofs, const ConformationModel &model);
+     * which the field lives; @p measure says whether the scene is
+     * axisymmetric. */
+    ConformationField(const DoFHandler<dim>   &dofs,
+                      const ConformationModel &model,
+                      const SceneMeasure      &measure = SceneMeasure(false));
 
     /** Sizes the vectors for the current DoFs of the DoFHandler (c = I);
      * their values come from set() or a StateTransfer. */
@@ -56,10 +63,14 @@ namespace levelsinter
 
     /** One step of length @p dt in the velocity field @p velocity from the
      * committed state; the result is held until commit(), so a step that is
-     * taken again starts from the same state. Returns the largest GMRES
-     * iteration count of the solves. */
+     * taken again starts from the same state. @p stretch_weight (nodal, on
+     * this field's DoFs with ghosts; none: 1 everywhere) scales the
+     * deformation terms: where it is 0, c is only carried and relaxes.
+     * Returns the largest GMRES iteration count of the solves. */
     unsigned int
-    advance(const VelocityField<dim> &velocity, const double dt);
+    advance(const VelocityField<dim> &velocity,
+            const double              dt,
+            const Vector             *stretch_weight = nullptr);
 
     /** The last advance() becomes the state. */
     void
@@ -78,12 +89,14 @@ namespace levelsinter
       return state;
     }
 
-    /** The polymer stress tau = G (c - I) (its dim x dim block) at the
-     * quadrature points of @p values, FEValues of this field's element
-     * with update_values, reinit on the cell. */
+    /** The polymer stress tau = G (c - I) at the quadrature points of
+     * @p values, FEValues of this field's element with update_values, reinit
+     * on the cell: its dim x dim block in @p stress, tau_thth (the third
+     * axis) in @p hoop_stress. */
     void
     stress_values(const FEValues<dim>                  &values,
-                  std::vector<SymmetricTensor<2, dim>> &stress) const;
+                  std::vector<SymmetricTensor<2, dim>> &stress,
+                  std::vector<double>                  &hoop_stress) const;
 
     const FE_Q<dim> &
     finite_element() const
@@ -115,13 +128,14 @@ namespace levelsinter
 
     /** Right-hand sides of the transport from @p old, the deformation
      * source evaluated at @p stage (averaged with the source at @p old when
-     * @p average). */
+     * @p average) and scaled by @p stretch_weight if given. */
     std::vector<Vector>
     assemble_rhs(const VelocityField<dim>  &velocity,
                  const double               dt,
                  const std::vector<Vector> &old,
                  const std::vector<Vector> &stage,
-                 const bool                 average) const;
+                 const bool                 average,
+                 const Vector              *stretch_weight) const;
 
     /** @p s after relaxing alone for @p dt at every node
      * (ConformationModel::relax_log()). */
@@ -133,6 +147,7 @@ namespace levelsinter
 
     const ConformationModel           model;
     const DoFHandler<dim>            &dofs;
+    const SceneMeasure                measure;
     FE_Q<dim>                         fe;
     MPI_Comm                          comm;
     IndexSet                          owned, relevant;

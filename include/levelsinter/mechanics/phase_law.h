@@ -29,25 +29,31 @@ namespace levelsinter
   /**
    * Right-hand sides a law with memory adds at one point (Eq. 93-94 for
    * the elastic solid): the momentum equation gets -stress : grad w, the
-   * continuity equation div v + c_p p = dilatation_rate.
+   * continuity equation div v + c_p p = dilatation_rate. On an
+   * axisymmetric scene the stress has the hoop entry sigma_thth too, which
+   * meets e_thth(w) = w_r / r.
    */
   template <int dim>
   struct HistoryTerms
   {
     SymmetricTensor<2, dim> stress;
+    double                  hoop_stress     = 0;
     double                  dilatation_rate = 0;
   };
 
   /**
    * What a law with memory reads at one point: the strain of the previous
    * step's displacement (elastic solid) and the polymer stress
-   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts).
+   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts),
+   * each with its hoop entry (u_r / r, tau_thth; 0 on a plane scene).
    */
   template <int dim>
   struct MaterialState
   {
     SymmetricTensor<2, dim> old_strain;
+    double                  old_hoop_strain = 0;
     SymmetricTensor<2, dim> polymer_stress;
+    double                  polymer_hoop_stress = 0;
   };
 
   /**

@@ -154,6 +154,12 @@ namespace levelsinter
     void
     commit_conformation(const LevelSetField<dim> &alpha);
 
+    /** Where the flow stretches c (ConformationField::advance()): 1 in
+     * the melt, fading to 0 over the atmosphere's side of the transition
+     * zone. */
+    TrilinosWrappers::MPI::Vector
+    stretch_weight(const LevelSetField<dim> &alpha) const;
+
     const ViscousFlowParameters          parameters;
     const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                 filter;
