@@ -222,8 +222,12 @@ namespace levelsinter
     });
     conformation_pending = false;
 
-    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(),
-                                        alpha.dof_handler().get_communicator());
+    const MPI_Comm comm = alpha.dof_handler().get_communicator();
+    // tr c and the principal stretches at the nodes, for the metrics and
+    // the output.
+    std::array<TrilinosWrappers::MPI::Vector, 4> owned;
+    for (auto &v : owned)
+      v.reinit(alpha.locally_owned(), comm);
     const auto         &s = conformation->log_conformation();
     std::vector<double> values(s.size());
     double              largest = 0;
@@ -231,17 +235,23 @@ namespace levelsinter
       {
         for (unsigned int k = 0; k < s.size(); ++k)
           values[k] = s[k](i);
-        owned(i) = trace(ConformationField<dim>::conformation(values));
-        largest  = std::max(largest, double(owned(i)));
+        const SymmetricTensor<2, 3> c =
+          ConformationField<dim>::conformation(values);
+        owned[0](i) = trace(c);
+        largest     = std::max(largest, double(owned[0](i)));
+        const std::array<double, 3> lambda = eigenvalues(c);
+        for (unsigned int d = 0; d < 3; ++d)
+          owned[d + 1](i) = std::sqrt(lambda[d]);
       }
-    owned.compress(VectorOperation::insert);
-    alpha.constraints().distribute(owned);
-    trace_c.reinit(alpha.locally_owned(),
-                   alpha.locally_relevant(),
-                   alpha.dof_handler().get_communicator());
-    trace_c     = owned;
-    max_trace_c = Utilities::MPI::max(largest,
-                                      alpha.dof_handler().get_communicator());
+    for (unsigned int k = 0; k < owned.size(); ++k)
+      {
+        owned[k].compress(VectorOperation::insert);
+        alpha.constraints().distribute(owned[k]);
+        auto &field = k == 0 ? trace_c : stretches[k - 1];
+        field.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
+        field = owned[k];
+      }
+    max_trace_c = Utilities::MPI::max(largest, comm);
   }
 
   template <int dim>
@@ -343,9 +353,16 @@ namespace levelsinter
                                kappa,
                                "viscous_flow_curvature");
     if (trace_c.size() == alpha.dof_handler().n_dofs())
-      data_out.add_data_vector(alpha.dof_handler(),
-                               trace_c,
-                               "viscoelastic_trace_c");
+      {
+        data_out.add_data_vector(alpha.dof_handler(),
+                                 trace_c,
+                                 "viscoelastic_trace_c");
+        for (unsigned int d = 0; d < 3; ++d)
+          data_out.add_data_vector(alpha.dof_handler(),
+                                   stretches[d],
+                                   "viscoelastic_stretch_" +
+                                     std::to_string(d + 1));
+      }
   }
 
   template <int dim>

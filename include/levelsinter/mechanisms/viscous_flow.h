@@ -14,6 +14,7 @@
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
+#include <array>
 #include <memory>
 
 namespace levelsinter
@@ -182,6 +183,8 @@ namespace levelsinter
     bool                                        conformation_pending = false;
     unsigned int                                conformation_iterations = 0;
     TrilinosWrappers::MPI::Vector               trace_c;
+    // The principal stretches sqrt(eigenvalues of c), largest first.
+    std::array<TrilinosWrappers::MPI::Vector, 3> stretches;
     double                                      max_trace_c = 3;
     double                               h_min           = 0;
     // Interface measure at the start of the step from step_start_time, kept
