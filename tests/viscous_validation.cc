@@ -631,11 +631,11 @@ namespace
           "hopper",
           [&](Simulation<dim> &sim, const SceneParameters &scene) {
             // The scene's overlapping circles fix the initial neck y0.
-            const auto  &particles = scene.geometry.particles;
-            R                      = particles[0][dim];
-            const double c = std::abs(particles[1][0] - particles[0][0]) / 2;
+            const auto      &particles = scene.geometry.particles;
+            const HopperPair pair(particles);
+            R               = pair.R;
             const Hopper exact(R);
-            const double m0 = exact.m_of_neck(std::sqrt(R * R - c * c));
+            const double m0 = pair.m();
             tau0            = exact.time(m0);
             const double gamma = scene.viscous_flow.surface_tension;
             const double eta   = zero_shear_viscosity(scene);
