@@ -103,9 +103,9 @@ namespace levelsinter
         "there; listing 'x-' in 'Domain/Symmetry planes' is allowed and "
         "changes nothing). Particles are centred on the axis or do not "
         "reach it (rings). Volumes, areas and every integral the metrics "
-        "report are those of the 3D body. Viscous flow (Newtonian, "
-        "surface tension forms 'sharp' and 'csf'), surface diffusion and a "
-        "prescribed velocity are available; volume diffusion is not yet.");
+        "report are those of the 3D body. Viscous flow (Newtonian, every "
+        "surface tension form), surface diffusion and a prescribed "
+        "velocity are available; volume diffusion is not yet.");
       prm.declare_entry("Perturbation amplitude",
                         "0.05",
                         Patterns::Double(-0.5, 0.5),

@@ -248,13 +248,6 @@ namespace levelsinter
           fail_entry("Phase law/Law",
                      "must be 'newtonian' with 'Geometry/Axisymmetric = "
                      "true' (the other laws have no hoop terms yet)");
-        if (viscous_flow.enabled &&
-            viscous_flow.surface_tension_form ==
-              ViscousFlowParameters::SurfaceTensionForm::csf_curvature)
-          fail_entry("Viscous flow/Surface tension form",
-                     "'csf-curvature' is not available with "
-                     "'Geometry/Axisymmetric = true' (its nodal curvature "
-                     "lacks the azimuthal n_r / r); use 'sharp' or 'csf'");
         // The axis is a mirror of the half plane: v_r = 0 there, and the
         // refinement and the rigid modes treat it as a symmetry plane.
         auto &planes = domain.symmetry_planes;
