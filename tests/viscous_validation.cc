@@ -237,7 +237,7 @@ namespace
   // Static bubble: one Stokes solve on a uniform mesh; p_in = gamma / R,
   // or 2 gamma / R for the sphere of an axisymmetric scene.
   // FORMS are the scene's surface-tension forms plus csf-curvature-exact,
-  // the csf-curvature form with the curvature prescribed as 1/R.
+  // the csf-curvature form with the curvature prescribed (1/R, 2/R).
   void
   bubble(const std::string              &scene_file,
          const std::vector<unsigned int> &levels,
@@ -294,9 +294,12 @@ namespace
           VelocityField<dim> velocity(simulation.triangulation());
           velocity.setup_dofs();
           velocity.set_zero();
+          // 1/R on a circle, 2/R on the sphere of an axisymmetric scene.
+          const double kappa_exact =
+            (alpha.measure().body_dimension<dim>() - 1.) / R;
           if (exact_curvature)
             flow.prescribe_curvature(
-              std::make_shared<Functions::ConstantFunction<dim>>(1 / R));
+              std::make_shared<Functions::ConstantFunction<dim>>(kappa_exact));
           flow.setup(alpha);
           const Timer cpu_timer(MPI_COMM_WORLD); // CPU summed over the ranks
           flow.add_velocity(alpha, 0, 0, velocity);
@@ -304,8 +307,7 @@ namespace
           const auto   p     = mean_pressures(flow.stokes(), alpha);
           const double gamma = scene.viscous_flow.surface_tension;
           const double eta   = scene.viscous_flow.solid_viscosity;
-          const double p_exact =
-            gamma * (alpha.measure().body_dimension<dim>() - 1.) / R;
+          const double p_exact = gamma * kappa_exact;
           const double error   = std::abs(p[0] - p[1] - p_exact) / p_exact;
           const double C       = velocity.max_norm() * eta / gamma;
           Point<dim>   centre;
@@ -317,7 +319,7 @@ namespace
             std::abs(core[0] - core[1] - p_exact) / p_exact;
           const auto kappa_error =
             flow.curvature().size() > 0 ?
-              curvature_errors(alpha, flow.curvature(), 1 / R) :
+              curvature_errors(alpha, flow.curvature(), kappa_exact) :
               std::array<double, 2>{{0., 0.}};
           table.add({double(level), h, double(id),
                      double(flow.stokes().dof_handler().n_dofs()),
@@ -333,7 +335,8 @@ namespace
         }
     if (root)
       std::cout << "(form: 0 = csf, 1 = sharp, 2 = csf-curvature, 3 = "
-                   "csf-curvature with kappa = 1/R; pressure_error = |p_in - "
+                   "csf-curvature with the exact kappa, 1/R (2/R "
+                   "axisymmetric); pressure_error = |p_in - "
                    "p_out - p_exact| / p_exact, p_exact = gamma/R (2 gamma/R "
                    "axisymmetric); core_error: the same with "
                    "the means over r < R/2 and r > 3R/2; kappa errors "
@@ -631,11 +634,11 @@ namespace
           "hopper",
           [&](Simulation<dim> &sim, const SceneParameters &scene) {
             // The scene's overlapping circles fix the initial neck y0.
-            const auto  &particles = scene.geometry.particles;
-            R                      = particles[0][dim];
-            const double c = std::abs(particles[1][0] - particles[0][0]) / 2;
+            const auto      &particles = scene.geometry.particles;
+            const HopperPair pair(particles);
+            R               = pair.R;
             const Hopper exact(R);
-            const double m0 = exact.m_of_neck(std::sqrt(R * R - c * c));
+            const double m0 = pair.m();
             tau0            = exact.time(m0);
             const double gamma = scene.viscous_flow.surface_tension;
             const double eta   = zero_shear_viscosity(scene);

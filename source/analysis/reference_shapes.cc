@@ -326,16 +326,8 @@ namespace levelsinter
         if (g.shape == GeometryParameters::Shape::hopper)
           {
             // The circles' overlap gives the neck (checked when parsed).
-            const auto        &p = g.particles;
-            const double       R = p[0][2];
-            const Tensor<1, 2> axis({p[1][0] - p[0][0], p[1][1] - p[0][1]});
-            const double       c = axis.norm() / 2;
-            const Hopper       hopper(R);
             return std::make_unique<HopperSignedDistance>(
-              R,
-              hopper.m_of_neck(std::sqrt(R * R - c * c)),
-              Point<2>((p[0][0] + p[1][0]) / 2, (p[0][1] + p[1][1]) / 2),
-              axis);
+              HopperPair(g.particles));
           }
         return std::make_unique<SlottedDisk>(
           Point<2>(g.slotted_disk_centre[0], g.slotted_disk_centre[1]),

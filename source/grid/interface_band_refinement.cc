@@ -41,7 +41,10 @@ namespace levelsinter
                             filter,
                             /*from_distance=*/true,
                             symmetry_boundaries))
-    , fe_values(level_set.fe(), QMidpoint<dim>(), update_gradients)
+    , measure(level_set.measure())
+    , fe_values(level_set.fe(),
+                QMidpoint<dim>(),
+                update_values | update_gradients | update_quadrature_points)
     , local_normal(level_set.fe().dofs_per_cell)
   {}
 
@@ -52,13 +55,21 @@ namespace levelsinter
   {
     fe_values.reinit(cell);
     Tensor<2, dim> gradient;
+    // On a body of revolution grad N has the azimuthal entry N_r / r, the
+    // hoop curvature (N_r = 0 on the axis nodes, nodal_normals()).
+    double hoop = 0;
     for (unsigned int c = 0; c < dim; ++c)
       {
         cell->get_dof_values(normals[c], local_normal);
         for (unsigned int i = 0; i < local_normal.size(); ++i)
-          gradient[c] += local_normal[i] * fe_values.shape_grad(i, 0);
+          {
+            gradient[c] += local_normal[i] * fe_values.shape_grad(i, 0);
+            if (c == 0)
+              hoop += local_normal[i] * fe_values.shape_value(i, 0);
+          }
       }
-    return gradient.norm();
+    hoop *= measure.inverse_radius(fe_values.quadrature_point(0));
+    return std::sqrt(gradient.norm_square() + hoop * hoop);
   }
 
   template <int dim>

@@ -107,18 +107,22 @@ namespace levelsinter
     else
       {
         // kappa_h = L2 projection of div N_alpha (Eq. 80 at dt = 0, nodal
-        // normals Eq. 84) in the band. At a node a distance d off the
-        // interface that is the curvature of the level set through the
-        // node, kappa(d) = kappa_0 / (1 + d kappa_0 / (dim - 1)) for a
-        // circle or sphere; the balanced force needs the interface value
-        // kappa_0 carried along the normal, so invert that relation.
+        // normals Eq. 84) in the band, with the azimuthal N_r / r on a body
+        // of revolution. At a node a distance d off the interface that is
+        // the curvature of the level set through the node,
+        // kappa(d) = kappa_0 / (1 + d kappa_0 / (n - 1)) for a circle or
+        // sphere (n = 2, 3 the body's dimension, 3 on a body of
+        // revolution); the balanced force needs the interface value kappa_0
+        // carried along the normal, so invert that relation.
         curvature_solver->solve(alpha, 0, 0, TrilinosWrappers::MPI::Vector());
-        const auto &projected = curvature_solver->curvature();
+        const auto  &projected = curvature_solver->curvature();
+        const double principal_curvatures =
+          alpha.measure().template body_dimension<dim>() - 1.;
         for (const auto i : alpha.locally_owned())
           {
             const double k = projected(i);
             const double d = filter.distance(alpha.alpha()(i));
-            owned(i)       = k / std::max(1 - d * k / (dim - 1), 0.5);
+            owned(i) = k / std::max(1 - d * k / principal_curvatures, 0.5);
           }
         owned.compress(VectorOperation::insert);
         alpha.constraints().distribute(owned);

@@ -26,26 +26,20 @@ namespace levelsinter
         fail_entry("Geometry/Particles",
                    "Shape = hopper needs exactly two particles of the same "
                    "radius");
-      const double       R = particles[0][2];
-      const Tensor<1, 2> axis({particles[1][0] - particles[0][0],
-                               particles[1][1] - particles[0][1]});
-      const double       c = axis.norm() / 2;
-      if (!(c > 0 && c < R))
+      const HopperPair pair(particles);
+      if (!pair.overlapping())
         fail_entry("Geometry/Particles",
                    "Shape = hopper: the two circles must overlap (centre "
                    "distance between 0 and 2 r): their overlap gives the "
                    "neck");
-      const Hopper   hopper(R);
-      const double   m = hopper.m_of_neck(std::sqrt(R * R - c * c));
-      const Point<2> centre((particles[0][0] + particles[1][0]) / 2,
-                            (particles[0][1] + particles[1][1]) / 2);
-      const Tensor<1, 2> e = axis / (2 * c);
+      const Point<2>     &centre = pair.centre;
+      const Tensor<1, 2> &e      = pair.direction;
       // The shape is symmetric about its line of centres and its neck
       // line: if they lie along the axes, it may cross a face through its
       // centre (a symmetry plane).
       const bool  aligned = std::abs(e[0] * e[1]) < 1e-12;
       const auto &lo = domain.lower_corner, &hi = domain.upper_corner;
-      for (const Point<2> &q : hopper.boundary(m, 720))
+      for (const Point<2> &q : Hopper(pair.R).boundary(pair.m(), 720))
         {
           const Point<2> x(centre[0] + e[0] * q[0] - e[1] * q[1],
                            centre[1] + e[1] * q[0] + e[0] * q[1]);
@@ -109,9 +103,9 @@ namespace levelsinter
         "there; listing 'x-' in 'Domain/Symmetry planes' is allowed and "
         "changes nothing). Particles are centred on the axis or do not "
         "reach it (rings). Volumes, areas and every integral the metrics "
-        "report are those of the 3D body. Viscous flow (Newtonian, "
-        "surface tension forms 'sharp' and 'csf'), surface diffusion and a "
-        "prescribed velocity are available; volume diffusion is not yet.");
+        "report are those of the 3D body. Viscous flow (Newtonian, every "
+        "surface tension form), surface diffusion and a prescribed "
+        "velocity are available; volume diffusion is not yet.");
       prm.declare_entry("Perturbation amplitude",
                         "0.05",
                         Patterns::Double(-0.5, 0.5),

@@ -120,16 +120,44 @@ namespace levelsinter
     // Sides of the fine polygon per side of the coarse one that the search
     // looks at first.
     constexpr unsigned int chunk = 40;
+
+    // From the first circle's centre to the second's.
+    Tensor<1, 2>
+    line_of_centres(const std::vector<std::vector<double>> &circles)
+    {
+      return Tensor<1, 2>({circles.at(1).at(0) - circles.at(0).at(0),
+                           circles[1].at(1) - circles[0].at(1)});
+    }
   } // namespace
 
-  HopperSignedDistance::HopperSignedDistance(const double        R,
-                                             const double        m,
-                                             const Point<2>     &centre,
-                                             const Tensor<1, 2> &axis)
-    : hopper(R)
-    , m(m)
-    , centre(centre)
-    , axis(axis / axis.norm())
+  HopperPair::HopperPair(const std::vector<std::vector<double>> &circles)
+    : R(circles.at(0).at(2))
+    , half_distance(line_of_centres(circles).norm() / 2)
+    , centre((circles[0][0] + circles[1][0]) / 2,
+             (circles[0][1] + circles[1][1]) / 2)
+  {
+    if (half_distance > 0)
+      direction = line_of_centres(circles) / (2 * half_distance);
+  }
+
+  bool
+  HopperPair::overlapping() const
+  {
+    return half_distance > 0 && half_distance < R;
+  }
+
+  double
+  HopperPair::m() const
+  {
+    return Hopper(R).m_of_neck(
+      std::sqrt(R * R - half_distance * half_distance));
+  }
+
+  HopperSignedDistance::HopperSignedDistance(const HopperPair &pair)
+    : hopper(pair.R)
+    , m(pair.m())
+    , centre(pair.centre)
+    , axis(pair.direction)
     , points(hopper.boundary(m, 500 * chunk))
     , deviation(500)
   {

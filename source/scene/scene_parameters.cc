@@ -250,13 +250,6 @@ namespace levelsinter
                      "'Geometry/Axisymmetric = true' yet (it serves volume "
                      "diffusion, which is not axisymmetric); run the scene "
                      "in 3D");
-        if (viscous_flow.enabled &&
-            viscous_flow.surface_tension_form ==
-              ViscousFlowParameters::SurfaceTensionForm::csf_curvature)
-          fail_entry("Viscous flow/Surface tension form",
-                     "'csf-curvature' is not available with "
-                     "'Geometry/Axisymmetric = true' (its nodal curvature "
-                     "lacks the azimuthal n_r / r); use 'sharp' or 'csf'");
         // The axis is a mirror of the half plane: v_r = 0 there, and the
         // refinement and the rigid modes treat it as a symmetry plane.
         auto &planes = domain.symmetry_planes;

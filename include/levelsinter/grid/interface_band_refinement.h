@@ -9,6 +9,7 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/level_set_filter.h>
+#include <levelsinter/level_set/scene_measure.h>
 #include <levelsinter/scene/scene_parameters.h>
 
 #include <array>
@@ -76,7 +77,8 @@ namespace levelsinter
     /**
      * |grad N| at a cell's centre, N the Q1-interpolated nodal normals of
      * the distance: sqrt(k1^2 + k2^2), |kappa| in 2D; unlike div N it does
-     * not cancel on a saddle-shaped neck.
+     * not cancel on a saddle-shaped neck. On a body of revolution the 3D
+     * one, with the hoop curvature N_r / r as k2.
      */
     class CellCurvature
     {
@@ -92,6 +94,7 @@ namespace levelsinter
       // Of the distance, not of alpha: the filter's curvature would tilt
       // them (geometry/nodal_normals.h) and read as interface curvature.
       std::array<TrilinosWrappers::MPI::Vector, dim> normals;
+      SceneMeasure                                   measure;
       FEValues<dim>                                  fe_values;
       dealii::Vector<double>                         local_normal;
     };

@@ -57,8 +57,36 @@ namespace levelsinter
   };
 
   /**
-   * Signed distance (negative inside) to Hopper's shape at parameter m, its
-   * centre at @p centre and its line of centres along @p axis: the distance
+   * The shape Geometry/Shape = hopper takes from two equal circles: their
+   * radius R, the midpoint of their centres and the unit vector from the
+   * first centre to the second (the line of centres), and Hopper's m of the
+   * neck half-width sqrt(R^2 - c^2) of their overlap, c half the centre
+   * distance.
+   */
+  struct HopperPair
+  {
+    /** From two circles 'x, y, r' (Geometry/Particles), the first one's
+     *  radius taken for both. */
+    explicit HopperPair(const std::vector<std::vector<double>> &circles);
+
+    /** Whether the circles overlap (0 < 2c < 2R): only then is there a
+     *  neck, and m() defined. */
+    bool
+    overlapping() const;
+
+    /** Hopper's m of the overlap's neck (needs overlapping()). */
+    double
+    m() const;
+
+    double       R;
+    double       half_distance;
+    Point<2>     centre;
+    Tensor<1, 2> direction;
+  };
+
+  /**
+   * Signed distance (negative inside) to Hopper's shape of @p pair (its m,
+   * centre and line of centres): the distance
    * to a fine polygon of the boundary (20 000 sides, sagitta below 1e-5 R
    * for m < 0.9; searched through a coarse one of 500 sides), the sign from
    * the implicit quartic. The start of
@@ -67,10 +95,7 @@ namespace levelsinter
   class HopperSignedDistance : public Function<2>
   {
   public:
-    HopperSignedDistance(const double        R,
-                         const double        m,
-                         const Point<2>     &centre,
-                         const Tensor<1, 2> &axis);
+    explicit HopperSignedDistance(const HopperPair &pair);
 
     double
     value(const Point<2> &p, const unsigned int component = 0) const override;
