@@ -1,0 +1,128 @@
+# --- Viscoelastic melts past topology change and in a 3D packing ----------
+# (issue 18; doc/validation.md, "Viscoelastic melts past topology change and
+# in a 3D packing"). Scenes: a pair from circles that only just overlap
+# (viscoelastic_pair_circles_2d.prm), a ring of four cylinders whose pore
+# closes (viscoelastic_ring_2d.prm), eight spheres whose central pore
+# closes off (viscoelastic_packing_3d.prm); the seed's Giesekus melt at
+# De = 1 (the scenes), De = 0.1 and the Newtonian melt of the same eta_0.
+# Each run is levelsinter itself (its output in ve_topology_NAME, its
+# standard output in ve_topology_NAME.log); scripts/topology_history.py
+# reads both and checks the limits.
+set(VE_PAIR ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_pair_circles_2d.prm)
+set(VE_RING ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_ring_2d.prm)
+set(VE_PACKING ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_packing_3d.prm)
+set(TOPOLOGY_HISTORY ${CMAKE_SOURCE_DIR}/scripts/topology_history.py)
+set(TOPOLOGY_DATA ${CMAKE_SOURCE_DIR}/doc/validation_data)
+
+set(VE_MELT_de1)
+set(VE_MELT_de0.1 --set "Phase law/Relaxation time=0.1")
+set(VE_MELT_newtonian --set "Phase law/Law=newtonian"
+  --set "Viscous flow/Solid viscosity=1")
+# The finest level L: 2D h = 1.6 / 2^L with band 9.6 h and filter 12.8 h
+# (the scenes are L = 6, R/h = 40); 3D h = 0.8 / 2^L with band 4 h and
+# filter 6 h (the scene is L = 3, R/h = 10).
+set(VE_LEVEL_2D_5 --set "Mesh refinement/Maximum level=5"
+  --set "Mesh refinement/Band width=0.48" --set "Level set/Filter thickness=0.64")
+set(VE_LEVEL_2D_6)
+set(VE_LEVEL_2D_7 --set "Mesh refinement/Maximum level=7"
+  --set "Mesh refinement/Band width=0.12" --set "Level set/Filter thickness=0.16")
+set(VE_LEVEL_3D_2 --set "Mesh refinement/Maximum level=2"
+  --set "Mesh refinement/Band width=0.8" --set "Level set/Filter thickness=1.2")
+set(VE_LEVEL_3D_3)
+
+# topology_run(NAME NP ARGS...): test NAME runs levelsinter ARGS on NP ranks
+# into ve_topology_NAME, fixture NAME.
+function(topology_run name np)
+  set(dir ve_topology_${name})
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND}
+    "-DCOMMAND=${MPIRUN};${MPIRUN_FLAGS};-np;${np};$<TARGET_FILE:levelsinter>;--overwrite;--set;Output/Directory=${dir};--set;Output/Field formats=none;--set;Output/Progress interval=0;${ARGN}"
+    -DLOG=${dir}.log -P ${CMAKE_CURRENT_SOURCE_DIR}/logged_run.cmake)
+  set_tests_properties(${name} PROPERTIES FIXTURES_SETUP ${name})
+endfunction()
+
+# topology_check(NAME RUN LEVEL ARGS...): test NAME reads the run of test
+# RUN (finest level LEVEL) with scripts/topology_history.py ARGS (limits),
+# CSV NAME.csv.
+function(topology_check name run level)
+  add_test(NAME ${name} COMMAND ${TOPOLOGY_HISTORY} --csv ${name}.csv
+    ${ARGN} ${level}=ve_topology_${run})
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${run})
+endfunction()
+
+# --- CI ---------------------------------------------------------------------
+# The ring at De = 1, R/h = 20, to t = ENDRING: the pore closes and vanishes.
+# Measured: CIRING. Limits: LIMITRING.
+topology_run(viscoelastic_topology_ring_2d 1 ${VE_LEVEL_2D_5}
+  --set "Time/End time=ENDRING" ${VE_RING})
+topology_check(viscoelastic_topology_ring_2d_check viscoelastic_topology_ring_2d 5
+  --max vanished_time=XX --max max_abs_volume_change=XX --max rejected=0
+  --max max_trace_c=XX)
+# The pair at De = 1 and as the Newtonian melt, R/h = 20, to t = 0.1.
+# Measured: CIPAIR. Limits: LIMITPAIR.
+
+# 1 and 2 ranks: the ring at De = 1, R/h = 20, the first 10 steps.
+
+# The 3D packing on 2 ranks at R/h = 5, the first steps.
+
+# --- Studies (validation-long) ---------------------------------------------
+# topology_study(NAME SCENE DIM NP LEVELS MELT ARGS...): the scene at each
+# of LEVELS (a list) for melt MELT on NP ranks, then its history and table
+# in doc/validation_data/viscoelastic_topology_NAME.csv(.levelL.csv);
+# fixture study_viscoelastic_topology_NAME for the plots.
+function(topology_study name scene dim np levels melt)
+  set(runs)
+  set(fixtures)
+  foreach(level ${levels})
+    set(run study_viscoelastic_topology_${name}_level${level})
+    topology_run(${run} ${np} ${VE_LEVEL_${dim}D_${level}} ${VE_MELT_${melt}}
+      ${ARGN} ${scene})
+    set_tests_properties(${run} PROPERTIES LABELS validation-long)
+    list(APPEND runs ${level}=ve_topology_${run})
+    list(APPEND fixtures ${run})
+  endforeach()
+  add_test(NAME study_viscoelastic_topology_${name} COMMAND ${TOPOLOGY_HISTORY}
+    --csv ${TOPOLOGY_DATA}/viscoelastic_topology_${name}.csv ${runs})
+  set_tests_properties(study_viscoelastic_topology_${name} PROPERTIES
+    LABELS validation-long FIXTURES_REQUIRED "${fixtures}"
+    FIXTURES_SETUP study_viscoelastic_topology_${name})
+endfunction()
+
+# The pair and the ring at R/h = 40 for the three melts; the ring at De = 1
+# also at R/h = 20 and 80 (convergence in h).
+foreach(melt newtonian de0.1 de1)
+  topology_study(pair_${melt}_2d ${VE_PAIR} 2 1 6 ${melt})
+  if(melt STREQUAL "de1")
+    topology_study(ring_${melt}_2d ${VE_RING} 2 1 "5;6;7" ${melt})
+  else()
+    topology_study(ring_${melt}_2d ${VE_RING} 2 1 6 ${melt})
+  endif()
+endforeach()
+# The 3D packing at R/h = 10 on 2 ranks, Newtonian and De = 1.
+foreach(melt newtonian de1)
+  topology_study(packing_${melt}_3d ${VE_PACKING} 3 2 3 ${melt})
+endforeach()
+
+# The plots (doc/validation_data/viscoelastic_topology_SCENE.png): neck,
+# closed-pore size and tr c against t for the melts of topology_study()
+# NAME_MELT_DIMd at LEVEL (scripts/plot_topology.py).
+set(VE_LABEL_newtonian "Newtonian")
+set(VE_LABEL_de0.1 "Giesekus De 0.1")
+set(VE_LABEL_de1 "Giesekus De 1")
+function(topology_plot name dim level size melts)
+  set(entries)
+  set(fixtures)
+  foreach(melt ${melts})
+    set(study viscoelastic_topology_${name}_${melt}_${dim}d)
+    list(APPEND entries "${VE_LABEL_${melt}}=${TOPOLOGY_DATA}/${study}.csv.level${level}.csv")
+    list(APPEND fixtures study_${study})
+  endforeach()
+  add_test(NAME study_viscoelastic_topology_plot_${name}_${dim}d
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_topology.py
+      ${TOPOLOGY_DATA}/viscoelastic_topology_${name}_${dim}d.png --size ${size}
+      ${entries})
+  set_tests_properties(study_viscoelastic_topology_plot_${name}_${dim}d
+    PROPERTIES LABELS validation-long FIXTURES_REQUIRED "${fixtures}")
+endfunction()
+topology_plot(pair 2 6 area "newtonian;de0.1;de1")
+topology_plot(ring 2 6 area "newtonian;de0.1;de1")
+topology_plot(packing 3 3 volume "newtonian;de1")
