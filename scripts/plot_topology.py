@@ -6,7 +6,11 @@ had a closed pore; tr c solid at the neck where the run measures it,
 dotted the largest anywhere).
 
 usage: plot_topology.py OUT.png [--title TEXT] [--size area|volume]
+                        [--open-porosity]
                         LABEL=FILE.levelN.csv [LABEL=FILE.levelN.csv ...]
+
+--open-porosity: the middle panel shows the open porosity instead (a
+packing whose pore space stays open).
 """
 import csv
 import math
@@ -18,6 +22,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
 args = sys.argv[1:]
+open_porosity = "--open-porosity" in args
+if open_porosity:
+    args.remove("--open-porosity")
 options = {"--title": None, "--size": "area"}
 for name in options:
     if name in args:
@@ -40,7 +47,7 @@ for k, entry in enumerate(args[1:]):
 
     colour = colours[k % len(colours)]
     neck_ax.plot(t, series("neck_radius"), color=colour, label=label)
-    size = series("closed_pore_size")
+    size = series("open_porosity" if open_porosity else "closed_pore_size")
     if any(s > 0 for s in size):
         pore_ax.plot(t, size, color=colour, label=label)
     at_neck = series("neck_trace_c")
@@ -52,7 +59,8 @@ for k, entry in enumerate(args[1:]):
                       label=f"{label}, largest")
 
 neck_ax.set_ylabel("smallest neck (half-width / radius)")
-pore_ax.set_ylabel(f"closed pores: {options['--size']} in the computed box")
+pore_ax.set_ylabel("open porosity" if open_porosity else
+                   f"closed pores: {options['--size']} in the computed box")
 trace_ax.set_ylabel("tr c")
 trace_ax.set_yscale("log")
 for ax in (neck_ax, pore_ax, trace_ax):

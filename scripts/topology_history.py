@@ -13,17 +13,19 @@ RUN_DIR.log, if present, is the run's standard output (tests/logged_run
 time per phase (the timer table at the end) come from there. For each run
 OUT.csv.levelLEVEL.csv gets the history, one row per metrics step: time,
 dt, neck_radius (the smallest neck over the pairs), neck_max, closed
-pores and their area (2D) or volume (3D) in the computed box, the solid's
-relative change, the largest tr c and tr c at the neck (NaN where the
+pores and their area (2D) or volume (3D) in the computed box, the open
+porosity (of the control volume), the solid's relative change, the largest tr c and tr c at the neck (NaN where the
 scene has none). OUT.csv gets one row per run: steps, rejected steps,
-wall time, the necks at the times of --times (interpolated), the closed
-pores' initial size, when the first pore closed (`closed` event after
-t = 0; NaN if none) and when the last one vanished (`vanished` with no
-closed pore left after it; NaN if one is left or there was none), the
-largest |relative solid change| and the last, the largest tr c anywhere
-and at the neck, the mean Stokes iterations and the wall time per step of
-each timer phase (phase_NAME). --min/--max NAME=VALUE check a column of the
-last run's row (exit code 1 if one fails; a NaN fails).
+wall time, the smallest neck, the closed pores' size and the open
+porosity at the times of --times (interpolated), the closed pores' initial size, when they fell
+below 10 % and 1 % of it (pore_below_F_time), when the first pore closed
+(`closed` event after t = 0; NaN if none) and when the last one vanished
+(`vanished` with no closed pore left after it; NaN if one is left or there
+was none), the largest |relative solid change| and the last, the largest
+tr c anywhere and at the neck, the mean Stokes iterations and the wall
+time per step of each timer phase (phase_NAME). --min/--max NAME=VALUE
+check a column of the last run's row (exit code 1 if one fails; a NaN
+fails).
 """
 import csv
 import math
@@ -71,6 +73,16 @@ def value_at(t, y, time):
     return float("nan")
 
 
+def first_below(t, y, level):
+    """The first time y falls below level (linear between rows); NaN if
+    it never does or starts there."""
+    for i in range(1, len(t)):
+        if y[i - 1] >= level > y[i]:
+            s = (y[i - 1] - level) / (y[i - 1] - y[i])
+            return t[i - 1] + s * (t[i] - t[i - 1])
+    return float("nan")
+
+
 def nan_max(values):
     finite = [v for v in values if not math.isnan(v)]
     return max(finite) if finite else float("nan")
@@ -108,6 +120,7 @@ def history(level, directory, csv_name, times):
         "neck_max": column(rows, "neck_max"),
         "closed_pores": column(rows, "closed_pores"),
         "closed_pore_size": column(rows, "closed_pore_volume"),
+        "open_porosity": column(rows, "open_porosity"),
         "volume_change": column(rows, "volume_change"),
         "max_trace_c": column(rows, "max_trace_c"),
         "neck_trace_c": column(rows, "neck_trace_c"),
@@ -132,6 +145,19 @@ def history(level, directory, csv_name, times):
     for time in times:
         summary[f"neck_t{time:g}"] = value_at(t, series["neck_radius"], time)
     summary["initial_closed_pore_size"] = series["closed_pore_size"][0]
+    for time in times:
+        summary[f"pore_t{time:g}"] = value_at(t, series["closed_pore_size"],
+                                              time)
+    for time in times:
+        summary[f"open_porosity_t{time:g}"] = value_at(
+            t, series["open_porosity"], time)
+    # The closure time by a threshold fixed in size: the first time the
+    # closed pores are below a fraction of their initial size (vanished
+    # means below one finest cell, a threshold that moves with h).
+    size = series["closed_pore_size"]
+    for fraction in (0.1, 0.01):
+        summary[f"pore_below_{fraction:g}_time"] = first_below(
+            t, size, fraction * size[0])
     summary["first_closed_time"] = closed[0] if closed else nan
     summary["vanished_time"] = (vanished[-1] if vanished and pores[-1] == 0
                                 else nan)
