@@ -4,7 +4,8 @@
 # (viscoelastic_pair_circles_2d.prm), a ring of four cylinders whose pore
 # closes (viscoelastic_ring_2d.prm), eight spheres whose central pore
 # closes off (viscoelastic_packing_3d.prm); the seed's Giesekus melt at
-# De = 1 (the scenes), De = 0.1 and the Newtonian melt of the same eta_0.
+# De = 1 (the scenes), De = 0.1 (2D) and the Newtonian melt of the same
+# eta_0.
 # Each run is levelsinter itself (its output in ve_topology_NAME, its
 # standard output in ve_topology_NAME.log); scripts/topology_history.py
 # reads both and checks the limits.
@@ -53,8 +54,8 @@ endfunction()
 # The ring at De = 1, R/h = 20, to t = 0.6 (the study's R/h = 20 run, cut):
 # the pore closes and vanishes. Measured: area below 10 % of its initial
 # at t = 0.126 (Newtonian: 0.685 at R/h = 40), vanished at 0.487, largest
-# |area change| 1.8e-5, largest tr c 2409 (single nodes at the cusps: not
-# converged in h, a bound against a blow-up), no rejected step (105 steps,
+# |area change| 1.8e-5, largest tr c 2409 (a single-node maximum, not
+# converged in h: a bound against a blow-up), no rejected step (105 steps,
 # 35 s).
 # Limits: 0.15, 0.55, 4e-5, 5000, none rejected.
 topology_run(viscoelastic_topology_ring_2d 1 ${VE_LEVEL_2D_5}
