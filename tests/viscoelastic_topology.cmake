@@ -141,6 +141,22 @@ foreach(melt newtonian de0.1 de1)
     topology_study(ring_${melt}_2d ${VE_RING} 2 1 6 ${melt})
   endif()
 endforeach()
+# tr c at the ring's neck (the application reads it for a pair only): the
+# ring at R/h = 40 with fields every 5 steps, read on x = 0 one finest
+# cell inside the outer surface above the neck's midpoint (0, 0.95)
+# (scripts/neck_field_2d.py).
+foreach(melt de0.1 de1)
+  set(run study_viscoelastic_topology_ring_neck_${melt}_2d_run)
+  topology_run(${run} 1 ${VE_MELT_${melt}} --set "Output/Field formats=xdmf"
+    --set "Output/Field interval=5" ${VE_RING})
+  set_tests_properties(${run} PROPERTIES LABELS validation-long)
+  add_test(NAME study_viscoelastic_topology_ring_neck_${melt}_2d
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/neck_field_2d.py ve_topology_${run}
+      --y0 0.95 --h 0.025
+      --csv ${TOPOLOGY_DATA}/viscoelastic_topology_ring_neck_${melt}_2d.csv)
+  set_tests_properties(study_viscoelastic_topology_ring_neck_${melt}_2d
+    PROPERTIES LABELS validation-long FIXTURES_REQUIRED ${run})
+endforeach()
 # The Newtonian pair against Hopper's exact neck from the same circles
 # (driver mode hopper --circle-start 1, R/h = 20 and 40): how far the
 # reference melt itself is from the exact coalescence.
