@@ -2,8 +2,8 @@
 """Neck, closed-pore size and tr c against time for runs through changes
 of topology: the histories FILE.levelN.csv of scripts/topology_history.py,
 one curve per file, in three panels (the pore panel only shows runs that
-had a closed pore; tr c solid at the neck where the run measures it,
-dotted the largest anywhere).
+had a closed pore, and is left out if none had; tr c solid at the neck
+where the run measures it, dotted the largest anywhere).
 
 usage: plot_topology.py OUT.png [--title TEXT] [--size area|volume]
                         [--open-porosity]
@@ -35,35 +35,41 @@ if len(args) < 2 or any("=" not in a for a in args[1:]):
     sys.exit(__doc__)
 out = args[0]
 
-figure, (neck_ax, pore_ax, trace_ax) = plt.subplots(1, 3, figsize=(15, 4.2))
-colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
-for k, entry in enumerate(args[1:]):
+runs = []
+for entry in args[1:]:
     label, path = entry.split("=", 1)
     rows = list(csv.DictReader(open(path)))
-    t = [float(r["time"]) for r in rows]
-
-    def series(name):
-        return [float(r[name]) for r in rows]
-
+    runs.append((label, {name: [float(r[name]) for r in rows]
+                         for name in rows[0]}))
+pore_name = "open_porosity" if open_porosity else "closed_pore_size"
+# Without any pore (a pair) the middle panel is left out.
+with_pores = any(any(v > 0 for v in run[pore_name]) for _, run in runs)
+figure, axes = plt.subplots(1, 3 if with_pores else 2,
+                            figsize=(15 if with_pores else 10, 4.2))
+neck_ax, trace_ax = axes[0], axes[-1]
+pore_ax = axes[1] if with_pores else None
+colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
+for k, (label, run) in enumerate(runs):
     colour = colours[k % len(colours)]
-    neck_ax.plot(t, series("neck_radius"), color=colour, label=label)
-    size = series("open_porosity" if open_porosity else "closed_pore_size")
-    if any(s > 0 for s in size):
-        pore_ax.plot(t, size, color=colour, label=label)
-    at_neck = series("neck_trace_c")
-    if any(not math.isnan(v) for v in at_neck):
-        trace_ax.plot(t, at_neck, color=colour, label=f"{label}, at the neck")
-    largest = series("max_trace_c")
-    if any(not math.isnan(v) for v in largest):
-        trace_ax.plot(t, largest, color=colour, linestyle=":",
+    t = run["time"]
+    neck_ax.plot(t, run["neck_radius"], color=colour, label=label)
+    if with_pores and any(v > 0 for v in run[pore_name]):
+        pore_ax.plot(t, run[pore_name], color=colour, label=label)
+    if any(not math.isnan(v) for v in run["neck_trace_c"]):
+        trace_ax.plot(t, run["neck_trace_c"], color=colour,
+                      label=f"{label}, at the neck")
+    if any(not math.isnan(v) for v in run["max_trace_c"]):
+        trace_ax.plot(t, run["max_trace_c"], color=colour, linestyle=":",
                       label=f"{label}, largest")
 
 neck_ax.set_ylabel("smallest neck (half-width / radius)")
-pore_ax.set_ylabel("open porosity" if open_porosity else
-                   f"closed pores: {options['--size']} in the computed box")
+if with_pores:
+    pore_ax.set_ylabel("open porosity" if open_porosity else
+                       f"closed pores: {options['--size']} in the computed "
+                       "box")
 trace_ax.set_ylabel("tr c")
 trace_ax.set_yscale("log")
-for ax in (neck_ax, pore_ax, trace_ax):
+for ax in axes:
     ax.set_xlabel("t gamma / (eta_0 R)")
     ax.grid(True, alpha=0.3)
     if ax.get_legend_handles_labels()[0]:
