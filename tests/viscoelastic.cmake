@@ -289,7 +289,7 @@ set_tests_properties(viscoelastic_spheres_axisymmetric_1_vs_2_ranks PROPERTIES
   FIXTURES_REQUIRED "ve_spheres_np1;ve_spheres_np2")
 # The De sweep on the seed's spheres (doc/validation.md, "Axisymmetric
 # spheres: the seed's Figs. 5-13"), the cylinders' settings.
-add_viscoelastic_scene_sweep_run(axisymmetric ${VE_SPHERES} newtonian 6,7,8
+add_viscoelastic_scene_sweep_run(axisymmetric ${VE_SPHERES} newtonian 5,6,7,8
   --set "Phase law/Law=newtonian" --set "Viscous flow/Solid viscosity=1")
 add_viscoelastic_scene_sweep_run(axisymmetric ${VE_SPHERES} de0.01 6
   --set "Phase law/Relaxation time=0.01")
@@ -306,3 +306,6 @@ add_viscoelastic_scene_sweep_run(axisymmetric ${VE_SPHERES} de1 5,6,7)
 # run's level 5.
 add_viscoelastic_scene_sweep_run(3d
   ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_spheres_3d.prm de1 5)
+add_viscoelastic_scene_sweep_run(3d
+  ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_spheres_3d.prm newtonian 5
+  --set "Phase law/Law=newtonian" --set "Viscous flow/Solid viscosity=1")
