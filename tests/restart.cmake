@@ -67,6 +67,11 @@ bad_input_test(resume_no_run "resume_nowhere/parameters.prm"
 # newest two only.
 add_test(NAME restart_checkpoint_minutes_keeps_two COMMAND bash -c
   "rm -rf restart_minutes && $<TARGET_FILE:levelsinter> --set 'Output/Directory=restart_minutes' --set 'Output/Checkpoint minutes=1e-6' --set 'Time/End time=0.05' --set 'Output/Field formats=none' ${SCENE} > /dev/null && ls restart_minutes/checkpoints && test \"$(ls restart_minutes/checkpoints)\" = \"$(printf 'step_000011\\nstep_000012')\"")
+# A run stopped by Time/Maximum steps before its end time is one sitting of
+# a longer run: with checkpoints on (every 5 steps here) it leaves its last
+# step (7) besides step 5.
+add_test(NAME restart_checkpoint_at_maximum_steps COMMAND bash -c
+  "rm -rf restart_max_steps && $<TARGET_FILE:levelsinter> --set 'Output/Directory=restart_max_steps' --set 'Output/Checkpoint interval=5' --set 'Time/Maximum steps=7' --set 'Output/Field formats=none' ${SCENE} > /dev/null && test \"$(ls restart_max_steps/checkpoints)\" = \"$(printf 'step_000005\\nstep_000007')\"")
 # The packing analysis across a restart (issue 16): the four cylinders
 # around a closed pore (closed_pore_2d.prm, viscous, h = 1/64, band 0.048),
 # 20 steps, a checkpoint every 5, metrics every step. The pore is closed

@@ -45,9 +45,11 @@ namespace levelsinter
                         Patterns::Integer(0),
                         "Write a checkpoint to Directory/checkpoints every "
                         "this many steps (0 = never; SIGINT and SIGTERM "
-                        "write one anyway). The last two are kept; "
-                        "'levelsinter --resume Directory' continues from "
-                        "the newest.");
+                        "write one anyway). With checkpoints on, a run that "
+                        "'Time/Maximum steps' stops before its end time "
+                        "writes one of its last step. The last two are "
+                        "kept; 'levelsinter --resume Directory' continues "
+                        "from the newest.");
       prm.declare_entry("Checkpoint minutes",
                         "0",
                         Patterns::Double(0),

@@ -781,15 +781,22 @@ namespace levelsinter
 
         // 3. Metrics, fields, progress. A stop signal makes this step the
         //    last on every rank alike, whichever rank received it.
-        const bool finished =
-          !(t < end_time * (1 - 1e-12)) ||
-          (scene.time.max_steps > 0 && step >= scene.time.max_steps);
-        const int signal =
+        const bool reached_end = !(t < end_time * (1 - 1e-12));
+        const bool step_limit  = !reached_end && scene.time.max_steps > 0 &&
+                                step >= scene.time.max_steps;
+        const bool finished    = reached_end || step_limit;
+        const int  signal =
           finished ? 0 : Utilities::MPI::max(int(stop_signal), comm);
         record(step, t, dt, finished || signal != 0);
         if (step_observer)
           step_observer(step, t, alpha);
-        if (signal != 0 || (!finished && checkpoint_due(step)))
+        // A run stopped by 'Maximum steps' before its end time is one
+        // sitting of a longer run: with checkpoints on, it leaves its last
+        // step to resume from.
+        const bool checkpoints_on = scene.output.checkpoint_interval > 0 ||
+                                    scene.output.checkpoint_minutes > 0;
+        if (signal != 0 || (step_limit && checkpoints_on) ||
+            (!finished && checkpoint_due(step)))
           {
             write_checkpoint(step, t);
             write_timing();
