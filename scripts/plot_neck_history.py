@@ -1,3 +1,4 @@
+#!/usr/bin/python3
 """Neck radius, neck curvature and tr c at the neck against time for the
 two-particle runs of `levelsinter_viscous_validation neck-history` (its
 FILE.levelN.csv: time, neck_radius, neck_curvature, neck_trace_c,

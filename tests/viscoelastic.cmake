@@ -137,7 +137,27 @@ function(add_viscoelastic_scene_sweep_run suffix scene name levels)
       --set "Time/End time=0.5" ${ARGN}
       --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/viscoelastic_sweep_${name}_${suffix}.csv)
   set_tests_properties(study_viscoelastic_sweep_${name}_${suffix} PROPERTIES
-    LABELS validation-long)
+    LABELS validation-long
+    FIXTURES_SETUP study_viscoelastic_sweep_${name}_${suffix})
+endfunction()
+# add_viscoelastic_sweep_plot(PNG "LABEL=RUN_SUFFIX:LEVEL;..." [--t-max T]):
+# doc/validation_data/PNG from the runs' histories
+# (scripts/plot_neck_history.py, run as its #! says: Debian's python3 has
+# matplotlib).
+function(add_viscoelastic_sweep_plot png curves)
+  set(entries)
+  set(fixtures)
+  foreach(curve ${curves})
+    string(REGEX MATCH "^(.*)=(.*):(.*)$" match "${curve}")
+    list(APPEND entries
+      "${CMAKE_MATCH_1}=${CMAKE_SOURCE_DIR}/doc/validation_data/viscoelastic_sweep_${CMAKE_MATCH_2}.csv.level${CMAKE_MATCH_3}.csv")
+    list(APPEND fixtures study_viscoelastic_sweep_${CMAKE_MATCH_2})
+  endforeach()
+  add_test(NAME study_viscoelastic_plot_${png}
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_neck_history.py
+      ${CMAKE_SOURCE_DIR}/doc/validation_data/${png}.png ${ARGN} ${entries})
+  set_tests_properties(study_viscoelastic_plot_${png} PROPERTIES
+    LABELS validation-long FIXTURES_REQUIRED "${fixtures}")
 endfunction()
 function(add_viscoelastic_sweep_run name levels)
   add_viscoelastic_scene_sweep_run(2d
@@ -309,3 +329,12 @@ add_viscoelastic_scene_sweep_run(3d
 add_viscoelastic_scene_sweep_run(3d
   ${CMAKE_SOURCE_DIR}/parameter_files/viscoelastic_spheres_3d.prm newtonian 5
   --set "Phase law/Law=newtonian" --set "Viscous flow/Solid viscosity=1")
+
+# The plots of doc/validation.md's viscoelastic sections.
+add_viscoelastic_sweep_plot(viscoelastic_sweep_2d
+  "Newtonian=newtonian_2d:6;De = 0.01=de0.01_2d:6;De = 0.1=de0.1_2d:6;De = 0.5=de0.5_2d:6;De = 1=de1_2d:6")
+add_viscoelastic_sweep_plot(viscoelastic_alpha_xpp_2d
+  "alpha = 0.1=de1_2d:6;alpha = 0.1875=alpha0.1875_2d:6;alpha = 0.275=alpha0.275_2d:6;alpha = 0.3625=alpha0.3625_2d:6;alpha = 0.45=alpha0.45_2d:6;XPP De = 0.1=xpp_de0.1_2d:6;XPP De = 1=xpp_de1_2d:6"
+  --t-max 0.2)
+add_viscoelastic_sweep_plot(viscoelastic_sweep_axisymmetric
+  "Newtonian (R/h 160)=newtonian_axisymmetric:8;De = 0.01=de0.01_axisymmetric:6;De = 0.1 (R/h 80)=de0.1_axisymmetric:7;De = 0.5=de0.5_axisymmetric:6;De = 1 (R/h 80)=de1_axisymmetric:7")

@@ -25,10 +25,8 @@ namespace levelsinter
                                   const MaterialState<dim> &state) const
   {
     HistoryTerms<dim> terms;
-    terms.stress      = 2 * G * f.solid * state.old_strain;
-    terms.hoop_stress = 2 * G * f.solid * state.old_hoop_strain;
-    terms.dilatation_rate =
-      -f.solid * (trace(state.old_strain) + state.old_hoop_strain) / dt;
+    terms.stress          = 2 * G * f.solid * state.old_strain;
+    terms.dilatation_rate = -f.solid * trace(state.old_strain) / dt;
     return terms;
   }
 

@@ -329,7 +329,6 @@ namespace levelsinter
     std::vector<double>                  kappa_q(quadrature.size());
     std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> old_strain_q(quadrature.size());
-    std::vector<Tensor<1, dim>>          old_displacement_q(quadrature.size());
     std::vector<SymmetricTensor<2, dim>> polymer_stress_q(quadrature.size());
     std::vector<double>                  polymer_hoop_q(quadrature.size());
     const bool history        = phase_law.has_history();
@@ -412,11 +411,8 @@ namespace levelsinter
           if (history)
             {
               old_strain_q.resize(n_q);
-              old_displacement_q.resize(n_q);
               values[velocity].get_function_symmetric_gradients(
                 old_displacement, old_strain_q);
-              values[velocity].get_function_values(old_displacement,
-                                                   old_displacement_q);
             }
           if (polymer_stress)
             conformation->stress_values(level_set_values,
@@ -437,11 +433,7 @@ namespace levelsinter
                 {
                   MaterialState<dim> state;
                   if (history)
-                    {
-                      state.old_strain = old_strain_q[k];
-                      state.old_hoop_strain =
-                        old_displacement_q[k][0] * data.inverse_radius[k];
-                    }
+                    state.old_strain = old_strain_q[k];
                   if (polymer_stress)
                     {
                       state.polymer_stress      = polymer_stress_q[k];

@@ -44,14 +44,14 @@ namespace levelsinter
   /**
    * What a law with memory reads at one point: the strain of the previous
    * step's displacement (elastic solid) and the polymer stress
-   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts),
-   * each with its hoop entry (u_r / r, tau_thth; 0 on a plane scene).
+   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts)
+   * with its hoop entry tau_thth (0 on a plane scene; the elastic solid is
+   * refused on axisymmetric scenes, so its strain has none).
    */
   template <int dim>
   struct MaterialState
   {
     SymmetricTensor<2, dim> old_strain;
-    double                  old_hoop_strain = 0;
     SymmetricTensor<2, dim> polymer_stress;
     double                  polymer_hoop_stress = 0;
   };
