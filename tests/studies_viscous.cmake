@@ -161,6 +161,13 @@ hopper_accuracy(band40_k3 two_cylinders_2d.prm 6
 hopper_accuracy(band40 two_cylinders_2d.prm 6)
 hopper_accuracy(k5 two_cylinders_2d.prm 5
   --set "Mesh refinement/Curvature refinement levels=5")
+# The atmosphere (Hopper's is a void): viscosity and compressibility.
+hopper_accuracy(fluid_viscosity1e-6 two_cylinders_2d.prm 5
+  --set "Viscous flow/Fluid viscosity=1e-6")
+foreach(c 0.1 10)
+  hopper_accuracy(compressibility${c} two_cylinders_2d.prm 5
+    --set "Viscous flow/Fluid compressibility=${c}")
+endforeach()
 hopper_accuracy(capillary1_cfl0.5 two_cylinders_2d.prm 5
   --set "Viscous flow/Capillary time step factor=1"
   --set "Time/CFL number=0.5")
