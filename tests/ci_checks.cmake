@@ -115,6 +115,25 @@ bad_input_test(band_as_wide_as_filter "smaller than Level set/Filter thickness"
   --set "Mesh refinement/Band width=0.05"
   ${CMAKE_SOURCE_DIR}/parameter_files/closed_pore_2d.prm)
 
+# Volume correction 'auto': on with viscous flow under the sharp form (which
+# loses solid area through the pressure stabilisation), off with the
+# balanced csf-curvature form. The run's header lists the mechanisms.
+set(CIRCLES ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_circles_2d.prm)
+add_test(NAME volume_correction_auto_sharp COMMAND levelsinter
+  --set "Volume correction/Enabled=auto" --set "Time/Maximum steps=1"
+  --set "Output/Directory=volume_correction_auto_sharp"
+  --set "Output/Field formats=none" ${CIRCLES})
+set_tests_properties(volume_correction_auto_sharp PROPERTIES
+  PASS_REGULAR_EXPRESSION "mechanisms: viscous flow, volume correction")
+add_test(NAME volume_correction_auto_csf_curvature COMMAND levelsinter
+  --set "Volume correction/Enabled=auto" --set "Time/Maximum steps=1"
+  --set "Viscous flow/Surface tension form=csf-curvature"
+  --set "Output/Directory=volume_correction_auto_csf_curvature"
+  --set "Output/Field formats=none" ${CIRCLES})
+set_tests_properties(volume_correction_auto_csf_curvature PROPERTIES
+  PASS_REGULAR_EXPRESSION "mechanisms: viscous flow\n"
+  FAIL_REGULAR_EXPRESSION "volume correction")
+
 # --- Step rejection ----------------------------------------------------------
 # A step whose solver fails is retried with half the step: with at most 6
 # GMRES iterations (the transport needs 6-7 at CFL 0.5) some steps fail and

@@ -190,6 +190,17 @@ namespace levelsinter
         level_set.solid_reinitialization ==
           LevelSetParameters::SolidReinitialization::band_cells;
 
+    // The tensorial surface-tension forms drain the solid through the
+    // interface (the ASGS stabilisation acts on the Laplace jump); by
+    // default the volume correction gives the area back.
+    using Form = ViscousFlowParameters::SurfaceTensionForm;
+    volume_correction.enabled =
+      volume_correction.choice ==
+          VolumeCorrectionParameters::Choice::automatic ?
+        viscous_flow.enabled && viscous_flow.surface_tension != 0 &&
+          viscous_flow.surface_tension_form != Form::csf_curvature :
+        volume_correction.choice == VolumeCorrectionParameters::Choice::on;
+
     // A mechanism that computes a velocity (viscous flow, surface
     // diffusion) lets the CFL number or its own limit choose the step.
     if (velocity.type == PrescribedVelocityParameters::Type::none &&

@@ -16,6 +16,15 @@ namespace levelsinter
     void
     parse(ParameterHandler &prm);
 
+    enum class Choice
+    {
+      automatic, // on with a tensorial surface-tension form
+      on,
+      off
+    };
+    Choice choice = Choice::automatic;
+    // The choice with 'auto' resolved from the mechanisms
+    // (SceneParameters::check_across_sections()).
     bool enabled = false;
   };
 } // namespace levelsinter
