@@ -103,9 +103,10 @@ namespace levelsinter
   {
     const MPI_Comm                comm = alpha.dof_handler().get_communicator();
     // H_h reaches ceil(E / h) cell layers from the cut cells, and the
-    // normals of its outermost nodes one layer more (measured on the
-    // coalescing spheres at R/h = 10: with one layer less the final radius
-    // moved from +0.27 % to +0.46 %, with one more not at all).
+    // normals of its outermost nodes one layer more. Measured on the
+    // coalescing spheres (final radius at R/h = 10 / 20): +0.44 / -0.49 %
+    // with ceil(E / h) layers, +0.45 / -0.24 % with one more, +0.43 /
+    // -0.23 % with two more.
     interface_level_set = redistanced_level_set(
       alpha, filter, std::ceil(parameters.interface_half_width) + 1);
     TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
