@@ -218,7 +218,8 @@ namespace levelsinter
                    true);
 
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() && in_geometry_band<dim>(filter, alpha, cell))
+      if (cell->is_locally_owned() &&
+          in_geometry_band<dim>(filter, alpha, cell))
         {
           fe_values.reinit(cell);
           fe_values.get_function_values(alpha, alpha_values);

@@ -50,17 +50,24 @@ namespace levelsinter
             if (cell->is_locally_owned())
               {
                 cell->get_dof_indices(indices);
-                const bool in_layer =
-                  layer == 0 ?
-                    std::any_of(indices.begin(),
-                                indices.end(),
-                                [&](const auto i) { return alpha(i) <= 0; }) &&
-                      std::any_of(indices.begin(),
-                                  indices.end(),
-                                  [&](const auto i) { return alpha(i) >= 0; }) :
-                    std::any_of(indices.begin(),
-                                indices.end(),
-                                [&](const auto i) { return ghosted(i) < layer; });
+                bool in_layer = false;
+                if (layer == 0)
+                  {
+                    // A cut cell: alpha changes sign among its vertices.
+                    const auto [lowest, highest] =
+                      std::minmax_element(indices.begin(),
+                                          indices.end(),
+                                          [&](const auto i, const auto j) {
+                                            return alpha(i) < alpha(j);
+                                          });
+                    in_layer = alpha(*lowest) <= 0 && alpha(*highest) >= 0;
+                  }
+                else
+                  in_layer = std::any_of(indices.begin(),
+                                         indices.end(),
+                                         [&](const auto i) {
+                                           return ghosted(i) < layer;
+                                         });
                 if (in_layer)
                   for (const auto i : indices)
                     reached(i) += 1;
@@ -76,7 +83,9 @@ namespace levelsinter
     }
 
     /** Points of the interface alpha_h = 0 with its unit normals (out of
-     * the solid), from every rank. */
+     * the solid), from every rank: 4 Gauss points per direction in each
+     * cut cell, so that the nearest lies within about h / 8 of the foot
+     * of a node's normal, and the tangent there gives the distance. */
     template <int dim>
     std::pair<std::vector<Point<dim>>, std::vector<Tensor<1, dim>>>
     interface_points(const LevelSetField<dim> &level_set)

@@ -108,7 +108,10 @@ namespace levelsinter
     // with ceil(E / h) layers, +0.45 / -0.24 % with one more, +0.43 /
     // -0.23 % with two more.
     interface_level_set = redistanced_level_set(
-      alpha, filter, std::ceil(parameters.interface_half_width) + 1);
+      alpha,
+      filter,
+      static_cast<unsigned int>(std::ceil(parameters.interface_half_width)) +
+        1);
     TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
     if (exact_curvature)
       VectorTools::interpolate(alpha.dof_handler(), *exact_curvature, owned);

@@ -19,7 +19,7 @@ namespace levelsinter
    * Why: where a neck fills, the transport carries the small |alpha| of
    * the neck's surface into the merged body along the neck plane, a ridge
    * of alpha ~ -h where the depth is many cells (doc/numerics.md,
-   * "Axisymmetric scenes"). On a symmetry plane or a grid line the
+   * "The level set the form reads"). On a symmetry plane or a grid line the
    * ridge's slopes in the cells on either side are those of a distance,
    * so the convective reinitialisation does not see it; the sharp form
    * does not either (it reads alpha_h = 0 only), but the smoothed
@@ -30,7 +30,8 @@ namespace levelsinter
    * alpha among the cell's vertices; layer 0 their vertices, layer k the
    * vertices of the cells touching layer k - 1). The interface lies in the
    * cut cells and each layer adds a cell of edge at least h_min, so a node
-   * of layer k is at least k h_min from the interface.
+   * of layer k is at least k h_min from the interface (hanging nodes
+   * aside, whose values are constrained).
    * - Up to @p layers layers, the node's distance is measured: the
    *   distance to the tangent line (plane) of the nearest of the
    *   interface's quadrature points (4 Gauss points per direction on the
@@ -42,7 +43,8 @@ namespace levelsinter
    * A level set that is a distance to within a quarter cell is returned
    * unchanged (the plane static bubble over time: C and the area error
    * the same to all printed digits). Hanging nodes take the constrained
-   * values.
+   * values. Cost: one gather of the interface points and one R-tree query
+   * per node within the layers.
    */
   template <int dim>
   TrilinosWrappers::MPI::Vector
