@@ -196,7 +196,10 @@ namespace
           for (unsigned int step = 1; step <= n_steps; ++step)
             {
               Timer wall(MPI_COMM_WORLD, true);
-              stokes.assemble(alpha, TrilinosWrappers::MPI::Vector(), 0);
+              stokes.assemble(alpha,
+                              TrilinosWrappers::MPI::Vector(),
+                              TrilinosWrappers::MPI::Vector(),
+                              0);
               const unsigned int its = stokes.solve();
               wall.stop();
               stokes.remove_rigid_motion(alpha);

@@ -169,23 +169,16 @@ namespace levelsinter
   }
 
   template <int dim>
-  bool
-  MixedCurvatureSolver<dim>::in_band(
-    const LevelSetField<dim>                             &level_set,
-    const typename DoFHandler<dim>::active_cell_iterator &cell) const
-  {
-    return in_geometry_band(filter, level_set, cell);
-  }
-
-  template <int dim>
   void
   MixedCurvatureSolver<dim>::assemble(const LevelSetField<dim> &level_set,
+                                      const Vector             &alpha,
                                       const double              coefficient,
                                       const double              dt,
                                       const Vector &previous_velocity)
   {
     TimerOutput::Scope scope(timer, "curvature assembly");
     normals = levelsinter::nodal_normals(level_set,
+                                         alpha,
                                          filter,
                                          settings.normals_from_distance,
                                          settings.symmetry_boundaries);
@@ -225,11 +218,12 @@ namespace levelsinter
                    true);
 
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() && in_band(level_set, cell))
+      if (cell->is_locally_owned() &&
+          in_geometry_band<dim>(filter, alpha, cell))
         {
           fe_values.reinit(cell);
-          fe_values.get_function_values(level_set.alpha(), alpha_values);
-          fe_values.get_function_gradients(level_set.alpha(), alpha_gradients);
+          fe_values.get_function_values(alpha, alpha_values);
+          fe_values.get_function_gradients(alpha, alpha_gradients);
           if (lag > 0)
             fe_values.get_function_gradients(previous_velocity, lag_gradients);
           // div N, on a body of revolution with the azimuthal N_r / r.
@@ -322,7 +316,19 @@ namespace levelsinter
                                    const double              dt,
                                    const Vector &previous_velocity)
   {
-    assemble(level_set, coefficient, dt, previous_velocity);
+    return solve(
+      level_set, level_set.alpha(), coefficient, dt, previous_velocity);
+  }
+
+  template <int dim>
+  unsigned int
+  MixedCurvatureSolver<dim>::solve(const LevelSetField<dim> &level_set,
+                                   const Vector             &alpha,
+                                   const double              coefficient,
+                                   const double              dt,
+                                   const Vector &previous_velocity)
+  {
+    assemble(level_set, alpha, coefficient, dt, previous_velocity);
     TimerOutput::Scope scope(timer, "curvature solve");
     // CPU time summed over the ranks (deal.II's Timer with a communicator).
     Timer        cpu_timer(level_set.dof_handler().get_communicator());

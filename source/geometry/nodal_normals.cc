@@ -19,6 +19,21 @@ namespace levelsinter
                 const bool                            from_distance,
                 const std::vector<types::boundary_id> &symmetry_boundaries)
   {
+    return nodal_normals(level_set,
+                         level_set.alpha(),
+                         filter,
+                         from_distance,
+                         symmetry_boundaries);
+  }
+
+  template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, dim>
+  nodal_normals(const LevelSetField<dim>             &level_set,
+                const TrilinosWrappers::MPI::Vector  &alpha,
+                const LevelSetFilter                 &filter,
+                const bool                            from_distance,
+                const std::vector<types::boundary_id> &symmetry_boundaries)
+  {
     using Vector        = TrilinosWrappers::MPI::Vector;
     const auto    &dofs = level_set.dof_handler();
     const MPI_Comm comm = dofs.get_communicator();
@@ -38,14 +53,14 @@ namespace levelsinter
           fe_values.reinit(cell);
           if (from_distance)
             {
-              cell->get_dof_values(level_set.alpha(), local_alpha);
+              cell->get_dof_values(alpha, local_alpha);
               gradient[0] = 0;
               for (unsigned int i = 0; i < local_alpha.size(); ++i)
                 gradient[0] += filter.distance(local_alpha[i]) *
                                fe_values.shape_grad(i, 0);
             }
           else
-            fe_values.get_function_gradients(level_set.alpha(), gradient);
+            fe_values.get_function_gradients(alpha, gradient);
           const double norm = gradient[0].norm();
           if (norm == 0)
             continue;
@@ -111,6 +126,18 @@ namespace levelsinter
                    const std::vector<types::boundary_id> &);
   template std::array<TrilinosWrappers::MPI::Vector, 3>
   nodal_normals<3>(const LevelSetField<3> &,
+                   const LevelSetFilter &,
+                   bool,
+                   const std::vector<types::boundary_id> &);
+  template std::array<TrilinosWrappers::MPI::Vector, 2>
+  nodal_normals<2>(const LevelSetField<2> &,
+                   const TrilinosWrappers::MPI::Vector &,
+                   const LevelSetFilter &,
+                   bool,
+                   const std::vector<types::boundary_id> &);
+  template std::array<TrilinosWrappers::MPI::Vector, 3>
+  nodal_normals<3>(const LevelSetField<3> &,
+                   const TrilinosWrappers::MPI::Vector &,
                    const LevelSetFilter &,
                    bool,
                    const std::vector<types::boundary_id> &);

@@ -218,6 +218,7 @@ namespace levelsinter
   TwoPhaseStokes<dim>::assemble_into(
     const LevelSetField<dim>            &alpha,
     const TrilinosWrappers::MPI::Vector &curvature,
+    const TrilinosWrappers::MPI::Vector &interface_level_set,
     const double                         surface_time_step,
     MatrixType                          &matrix,
     VectorType                          &rhs)
@@ -233,15 +234,18 @@ namespace levelsinter
     const bool sharp = settings.form == SurfaceTensionForm::sharp && gamma != 0;
     const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
     if (curvature_form &&
-        curvature.size() != alpha.dof_handler().n_dofs())
+        (curvature.size() != alpha.dof_handler().n_dofs() ||
+         interface_level_set.size() != alpha.dof_handler().n_dofs()))
       throw std::runtime_error(
         "viscous flow: the csf-curvature surface-tension form needs a "
-        "curvature on the level-set DoFs");
+        "curvature and an interface level set on the level-set DoFs");
 
     // H_h of the balanced force: H_s at the level-set nodes, with the
     // hanging-node constraints applied so that H_h lies in the (continuous)
     // pressure space. A node has no cell size of its own: E is taken at the
     // finest cells (the form is meant for the bubble's uniform meshes).
+    // Read from the interface level set: alpha is no distance everywhere
+    // in the transition zone (redistanced_level_set()).
     TrilinosWrappers::MPI::Vector solid_fraction;
     if (curvature_form)
       {
@@ -252,7 +256,7 @@ namespace levelsinter
         const MPI_Comm                comm = dofs.get_communicator();
         TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
         for (const auto i : alpha.locally_owned())
-          owned(i) = heaviside.solid_fraction(alpha.alpha()(i));
+          owned(i) = heaviside.solid_fraction(interface_level_set(i));
         owned.compress(VectorOperation::insert);
         alpha.constraints().distribute(owned);
         solid_fraction.reinit(alpha.locally_owned(),
@@ -548,14 +552,23 @@ namespace levelsinter
   TwoPhaseStokes<dim>::assemble(
     const LevelSetField<dim>            &alpha,
     const TrilinosWrappers::MPI::Vector &curvature,
+    const TrilinosWrappers::MPI::Vector &interface_level_set,
     const double                         surface_time_step)
   {
     if (settings.direct_solver)
-      assemble_into(
-        alpha, curvature, surface_time_step, monolithic_matrix, monolithic_rhs);
+      assemble_into(alpha,
+                    curvature,
+                    interface_level_set,
+                    surface_time_step,
+                    monolithic_matrix,
+                    monolithic_rhs);
     else
-      assemble_into(
-        alpha, curvature, surface_time_step, system_matrix, system_rhs);
+      assemble_into(alpha,
+                    curvature,
+                    interface_level_set,
+                    surface_time_step,
+                    system_matrix,
+                    system_rhs);
   }
 
   template <int dim>

@@ -163,7 +163,10 @@ namespace levelsinter
     phases->set_time_step(dt > 0 ? dt_seconds : probe_step);
     {
       TimerOutput::Scope scope(timer, "volume diffusion: elastic assembly");
-      operator_->assemble(alpha, TrilinosWrappers::MPI::Vector(), 0);
+      operator_->assemble(alpha,
+                          TrilinosWrappers::MPI::Vector(),
+                          TrilinosWrappers::MPI::Vector(),
+                          0);
     }
     {
       TimerOutput::Scope scope(timer, "volume diffusion: elastic solve");

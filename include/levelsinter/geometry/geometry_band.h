@@ -19,13 +19,23 @@ namespace levelsinter
   template <int dim>
   bool
   in_geometry_band(const LevelSetFilter                                 &filter,
-                   const LevelSetField<dim>                             &level_set,
+                   const TrilinosWrappers::MPI::Vector                  &alpha,
                    const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     for (const unsigned int v : cell->vertex_indices())
-      if (filter.gradient_norm_target(
-            level_set.alpha()(cell->vertex_dof_index(v, 0))) < 0.3)
+      if (filter.gradient_norm_target(alpha(cell->vertex_dof_index(v, 0))) <
+          0.3)
         return false;
     return true;
+  }
+
+  /** The same for the level set's own values. */
+  template <int dim>
+  bool
+  in_geometry_band(const LevelSetFilter                                 &filter,
+                   const LevelSetField<dim>                             &level_set,
+                   const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    return in_geometry_band<dim>(filter, level_set.alpha(), cell);
   }
 } // namespace levelsinter

@@ -83,6 +83,19 @@ namespace levelsinter
           const double              dt,
           const Vector             &previous_velocity);
 
+    /**
+     * The same with the values @p alpha (ghosted, on the level set's DoFs)
+     * in place of the level set's own, for the normals, the band and the
+     * weights (the csf-curvature form's redistanced level set,
+     * redistanced_level_set()).
+     */
+    unsigned int
+    solve(const LevelSetField<dim> &level_set,
+          const Vector             &alpha,
+          const double              coefficient,
+          const double              dt,
+          const Vector             &previous_velocity);
+
     /** kappa (ghosted): 1/R on a circle, 2/R on a sphere. */
     const Vector &
     curvature() const
@@ -105,12 +118,9 @@ namespace levelsinter
     }
 
   private:
-    bool
-    in_band(const LevelSetField<dim>                             &level_set,
-            const typename DoFHandler<dim>::active_cell_iterator &cell) const;
-
     void
     assemble(const LevelSetField<dim> &level_set,
+             const Vector             &alpha,
              const double              coefficient,
              const double              dt,
              const Vector             &previous_velocity);

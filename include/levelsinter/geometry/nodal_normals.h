@@ -36,4 +36,17 @@ namespace levelsinter
                 const LevelSetFilter                 &filter,
                 const bool                            from_distance,
                 const std::vector<types::boundary_id> &symmetry_boundaries = {});
+
+  /**
+   * The same for the values @p alpha (ghosted) on the level set's DoFs in
+   * place of its own (the csf-curvature form's redistanced level set,
+   * redistanced_level_set()).
+   */
+  template <int dim>
+  std::array<TrilinosWrappers::MPI::Vector, dim>
+  nodal_normals(const LevelSetField<dim>             &level_set,
+                const TrilinosWrappers::MPI::Vector  &alpha,
+                const LevelSetFilter                 &filter,
+                const bool                            from_distance,
+                const std::vector<types::boundary_id> &symmetry_boundaries);
 } // namespace levelsinter

@@ -44,7 +44,8 @@ namespace levelsinter
    * - csf_curvature (Eq. 100 written as a balanced force),
    *   F_gamma(w) = int f . w with f = gamma kappa_h grad H_h, where H_h is
    *   the Q1 interpolant of the smoothed solid fraction H_s(alpha_h)
-   *   (Eq. 102) and kappa_h the nodal curvature passed to assemble(): for
+   *   (Eq. 102) of the interface level set passed to assemble() (alpha
+   *   where it is a distance) and kappa_h the nodal curvature: for
    *   constant kappa_h, f is the gradient of p_h = gamma kappa H_h, a member
    *   of the pressure space, so (v, p) = (0, p_h) solves the discrete
    *   problem exactly; the residual-consistent stabilisation (the same f in
@@ -113,12 +114,16 @@ namespace levelsinter
      * Assemble matrix and right-hand side for the level set @p alpha.
      * @p curvature: nodal kappa on the level set's DoFs (ghosted), used by
      * the csf_curvature form only (may be empty otherwise).
+     * @p interface_level_set: the level set H_h is taken from (ghosted, on
+     * its DoFs), a distance near the interface (redistanced_level_set());
+     * csf_curvature only (may be empty otherwise).
      * @p surface_time_step: dt of the semi-implicit Laplace-Beltrami term;
      * 0 leaves the surface tension explicit.
      */
     void
     assemble(const LevelSetField<dim>            &alpha,
              const TrilinosWrappers::MPI::Vector &curvature,
+             const TrilinosWrappers::MPI::Vector &interface_level_set,
              const double                         surface_time_step);
 
     /** Solve; returns the number of outer iterations (0: direct). */
@@ -189,6 +194,7 @@ namespace levelsinter
     void
     assemble_into(const LevelSetField<dim>            &alpha,
                   const TrilinosWrappers::MPI::Vector &curvature,
+                  const TrilinosWrappers::MPI::Vector &interface_level_set,
                   const double                         surface_time_step,
                   MatrixType                          &matrix,
                   VectorType                          &rhs);

@@ -175,6 +175,9 @@ namespace levelsinter
     std::unique_ptr<MixedCurvatureSolver<dim>> curvature_solver;
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;
+    // csf-curvature: the level set H_h and kappa are taken from, alpha
+    // redistanced where it is no distance (redistanced_level_set()).
+    TrilinosWrappers::MPI::Vector              interface_level_set;
     // Viscoelastic melts only: the conformation tensor, whether a step
     // advanced it that is not accepted yet, tr c at the nodes for the
     // output and its maximum.
