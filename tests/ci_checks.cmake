@@ -119,13 +119,14 @@ bad_input_test(band_as_wide_as_filter "smaller than Level set/Filter thickness"
 # loses solid area through the pressure stabilisation), off with the
 # balanced csf-curvature form. The run's header lists the mechanisms.
 set(CIRCLES ${CMAKE_SOURCE_DIR}/parameter_files/two_cylinders_circles_2d.prm)
-add_test(NAME volume_correction_auto_sharp COMMAND levelsinter
+add_test(NAME volume_correction_auto_sharp COMMAND levelsinter --overwrite
   --set "Volume correction/Enabled=auto" --set "Time/Maximum steps=1"
   --set "Output/Directory=volume_correction_auto_sharp"
   --set "Output/Field formats=none" ${CIRCLES})
 set_tests_properties(volume_correction_auto_sharp PROPERTIES
   PASS_REGULAR_EXPRESSION "mechanisms: viscous flow, volume correction")
 add_test(NAME volume_correction_auto_csf_curvature COMMAND levelsinter
+  --overwrite
   --set "Volume correction/Enabled=auto" --set "Time/Maximum steps=1"
   --set "Viscous flow/Surface tension form=csf-curvature"
   --set "Output/Directory=volume_correction_auto_csf_curvature"
