@@ -83,44 +83,26 @@ add_test(NAME axisymmetric_two_spheres_csf_curvature COMMAND ${VISCOUS}
   --set "Viscous flow/Surface tension form=csf-curvature"
   --max-final-radius-error 0.008 --max-volume-drift 3e-7
   --max-mean-stokes-its 21)
-# axisymmetric_ranks(NAME OUT "EXCLUDED" ARGS...): the spheres on 1 and 2
-# ranks with ARGS and the test NAME_1_vs_2_ranks comparing their metrics
-# (limit 1e-7) except the columns EXCLUDED.
-function(axisymmetric_ranks name out excluded)
-  foreach(np 1 2)
-    add_test(NAME ${name}_np${np}
-      COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-        --set "Time/End time=0.5" --set "Mesh refinement/Maximum level=3"
-        --set "Mesh refinement/Band width=0.2"
-        --set "Level set/Filter thickness=0.3" ${ARGN}
-        --set "Output/Directory=${out}_np${np}"
-        --set "Output/Field formats=none" --set "Output/Progress interval=0"
-        --overwrite ${AXI_SPHERES})
-    set_tests_properties(${name}_np${np} PROPERTIES
-      FIXTURES_SETUP ${out}_np${np})
-  endforeach()
-  add_test(NAME ${name}_1_vs_2_ranks
-    COMMAND compare_metrics ${out}_np1/metrics.csv ${out}_np2/metrics.csv
-      1e-7 wall_time stokes_solve_cpu transport_iterations ${excluded})
-  set_tests_properties(${name}_1_vs_2_ranks PROPERTIES
-    FIXTURES_REQUIRED "${out}_np1;${out}_np2")
-endfunction()
 # 1 and 2 ranks, R/h = 5 (band 4 h, filter 6 h) to t = 0.5, 21 steps: the
 # metrics agree to 1.3e-8 (measured; FGMRES to 1e-10 with an AMG that
 # depends on the partition), the Stokes iterations exactly. Not compared:
 # times, the transport's iterations, volume_change and
 # centre_distance_change (differences of nearly equal numbers). Limit
 # 1e-7.
-axisymmetric_ranks(axisymmetric_two_spheres axisymmetric
-  "volume_change;centre_distance_change")
+set(AXI_RANKS --set "Time/End time=0.5"
+  --set "Mesh refinement/Maximum level=3" --set "Mesh refinement/Band width=0.2"
+  --set "Level set/Filter thickness=0.3" --set "Output/Progress interval=0")
+ranks_agree(axisymmetric_two_spheres axisymmetric ${AXI_SPHERES} 1e-7
+  "transport_iterations;volume_change;centre_distance_change" ${AXI_RANKS})
 # The same with csf-curvature: its redistanced level set gathers the
 # interface points of every rank. Measured: the metrics agree to 3e-8,
 # except volume_correction_speed (3e-7: (V_0 - V) / (dt S) with V within
 # 9e-6 of V_0, a difference of nearly equal numbers like volume_change).
 # Limit 1e-7.
-axisymmetric_ranks(axisymmetric_two_spheres_csf_curvature axisymmetric_csf
-  "volume_change;centre_distance_change;volume_correction_speed"
-  --set "Viscous flow/Surface tension form=csf-curvature")
+ranks_agree(axisymmetric_two_spheres_csf_curvature axisymmetric_csf
+  ${AXI_SPHERES} 1e-7
+  "transport_iterations;volume_change;centre_distance_change;volume_correction_speed"
+  ${AXI_RANKS} --set "Viscous flow/Surface tension form=csf-curvature")
 
 # Mullins decay of a P_2-perturbed sphere by surface diffusion (exact rate
 # 24 in t*), R/h = 16, E = 6 h, refined band 0.8 E, 40 steps over half an

@@ -289,24 +289,14 @@ add_newtonian_limit_check(axisymmetric
 # on 1 and 2 ranks: every column but timings, iteration counts and the
 # near-zero volume change and correction speed (values of 1e-6, equal to
 # 1e-4 relative) agrees to 5.0e-8 (measured); limit 1e-6.
-foreach(np 1 2)
-  add_test(NAME viscoelastic_spheres_axisymmetric_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-      --overwrite --set "Time/End time=0.02"
-      --set "Mesh refinement/Maximum level=5"
-      --set "Mesh refinement/Band width=0.48"
-      --set "Level set/Filter thickness=0.64"
-      --set "Output/Field formats=none" --set "Output/Metrics interval=1"
-      --set "Output/Directory=ve_spheres_np${np}" ${VE_SPHERES})
-  set_tests_properties(viscoelastic_spheres_axisymmetric_np${np} PROPERTIES
-    FIXTURES_SETUP ve_spheres_np${np} PASS_REGULAR_EXPRESSION "done: 25 steps")
-endforeach()
-add_test(NAME viscoelastic_spheres_axisymmetric_1_vs_2_ranks
-  COMMAND compare_metrics ve_spheres_np1/metrics.csv ve_spheres_np2/metrics.csv
-  1e-6 wall_time stokes_solve_cpu stokes_iterations transport_iterations
-  conformation_iterations volume_change volume_correction_speed)
-set_tests_properties(viscoelastic_spheres_axisymmetric_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "ve_spheres_np1;ve_spheres_np2")
+ranks_agree(viscoelastic_spheres_axisymmetric ve_spheres ${VE_SPHERES} 1e-6
+  "stokes_iterations;transport_iterations;conformation_iterations;volume_change;volume_correction_speed"
+  --set "Time/End time=0.02" --set "Mesh refinement/Maximum level=5"
+  --set "Mesh refinement/Band width=0.48"
+  --set "Level set/Filter thickness=0.64" --set "Output/Metrics interval=1")
+set_tests_properties(viscoelastic_spheres_axisymmetric_np1
+  viscoelastic_spheres_axisymmetric_np2 PROPERTIES
+  PASS_REGULAR_EXPRESSION "done: 25 steps")
 # The De sweep on the seed's spheres (doc/validation.md, "Axisymmetric
 # spheres: the seed's Figs. 5-13"), the cylinders' settings.
 add_viscoelastic_scene_sweep_run(axisymmetric ${VE_SPHERES} newtonian 5,6,7,8
