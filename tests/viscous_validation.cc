@@ -302,7 +302,7 @@ namespace
               std::make_shared<Functions::ConstantFunction<dim>>(kappa_exact));
           flow.setup(alpha);
           const Timer cpu_timer(MPI_COMM_WORLD); // CPU summed over the ranks
-          flow.add_velocity(alpha, 0, 0, velocity);
+          flow.add_probe_velocity(alpha, 0, velocity);
           const double cpu_time = cpu_timer.cpu_time();
           const auto   p     = mean_pressures(flow.stokes(), alpha);
           const double gamma = scene.viscous_flow.surface_tension;

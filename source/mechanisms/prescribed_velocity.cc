@@ -146,6 +146,16 @@ namespace levelsinter
     velocity.add(*function);
   }
 
+  template <int dim>
+  void
+  PrescribedVelocity<dim>::add_probe_velocity(const LevelSetField<dim> &,
+                                              const double        t,
+                                              VelocityField<dim> &velocity)
+  {
+    function->set_time(t);
+    velocity.add(*function);
+  }
+
   template class PrescribedVelocity<2>;
   template class PrescribedVelocity<3>;
 

@@ -37,9 +37,6 @@ namespace levelsinter
   SurfaceDiffusion<dim>::setup(const LevelSetField<dim> &alpha)
   {
     solver.setup(alpha);
-    // After a mesh change the state transfer fills previous_velocity next,
-    // and the first solve on the new mesh must keep it.
-    solved_time = -1;
   }
 
   template <int dim>
@@ -47,12 +44,9 @@ namespace levelsinter
   SurfaceDiffusion<dim>::add_state(const LevelSetField<dim> &alpha,
                                    StateTransfer<dim>       &transfer)
   {
-    // The next step starts a new time level: the last solve's v_s is its
-    // v_s^{n-1}. Without a solve on this mesh the lagged one stays.
-    if (solved_time >= 0)
-      previous_velocity = solver.normal_velocity();
-    else if (previous_velocity.size() != alpha.dof_handler().n_dofs())
-      // A restart: the checkpoint's v_s^{n-1} is read into it.
+    if (previous_velocity.size() != alpha.dof_handler().n_dofs())
+      // Before the first step, or a restart: the checkpoint's v_s^{n-1} is
+      // read into it.
       previous_velocity.reinit(alpha.locally_owned(),
                                alpha.locally_relevant(),
                                alpha.dof_handler().get_communicator());
@@ -81,11 +75,33 @@ namespace levelsinter
                                       const double              dt,
                                       VelocityField<dim>       &velocity)
   {
-    if (solved_time >= 0 && t > solved_time)
-      previous_velocity = solver.normal_velocity();
-    iterations  = solver.solve(alpha, mobility, dt, previous_velocity);
-    solved_time = t;
+    iterations = solver.solve(alpha, mobility, dt, previous_velocity);
+    add_normal_velocity(alpha, velocity);
+  }
 
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::add_probe_velocity(const LevelSetField<dim> &alpha,
+                                            const double,
+                                            VelocityField<dim> &velocity)
+  {
+    iterations = solver.solve(alpha, mobility, 0, previous_velocity);
+    add_normal_velocity(alpha, velocity);
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::accept_step(const LevelSetField<dim> &)
+  {
+    lag_of_last_step.swap(previous_velocity);
+    previous_velocity = solver.normal_velocity();
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::add_normal_velocity(const LevelSetField<dim> &alpha,
+                                             VelocityField<dim> &velocity) const
+  {
     TimerOutput::Scope scope(timer, "surface diffusion velocity");
     // Eq. 84: v = v_s N_alpha at each node. Both live on the level set's
     // vertices; the velocity space numbers them its own way.

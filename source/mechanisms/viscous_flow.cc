@@ -54,7 +54,6 @@ namespace levelsinter
   {
     const auto &tria = alpha.dof_handler().get_triangulation();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
-    step_start_time = -1;
     const auto settings =
       TwoPhaseStokes<dim>::Settings::from(parameters,
                                           symmetry_planes,
@@ -145,16 +144,34 @@ namespace levelsinter
   template <int dim>
   void
   ViscousFlow<dim>::add_velocity(const LevelSetField<dim> &alpha,
-                                 const double        t,
+                                 const double,
                                  const double        dt,
                                  VelocityField<dim> &velocity)
   {
-    if (dt > 0 && parameters.surface_tension > 0 &&
-        parameters.external_pressure == 0 && t != step_start_time)
+    if (parameters.surface_tension > 0 && parameters.external_pressure == 0 &&
+        !step_started)
       {
         measures_at_step_start = interface_measures::volume_and_area(alpha);
-        step_start_time = t;
+        step_started           = true;
       }
+    solve_velocity(alpha, dt, velocity);
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::add_probe_velocity(const LevelSetField<dim> &alpha,
+                                       const double,
+                                       VelocityField<dim> &velocity)
+  {
+    solve_velocity(alpha, 0, velocity);
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::solve_velocity(const LevelSetField<dim> &alpha,
+                                   const double              dt,
+                                   VelocityField<dim>       &velocity)
+  {
     if (kappa.size() > 0)
       {
         TimerOutput::Scope scope(timer, "viscous flow: curvature");
@@ -275,8 +292,16 @@ namespace levelsinter
   void
   ViscousFlow<dim>::accept_step(const LevelSetField<dim> &alpha)
   {
+    step_started = false;
     if (conformation && conformation_pending)
       commit_conformation(alpha);
+  }
+
+  template <int dim>
+  void
+  ViscousFlow<dim>::reject_step()
+  {
+    conformation_pending = false;
   }
 
   template <int dim>

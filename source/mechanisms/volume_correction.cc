@@ -14,15 +14,30 @@ namespace levelsinter
 
   template <int dim>
   void
+  VolumeCorrection<dim>::keep_initial_volume(const LevelSetField<dim> &alpha)
+  {
+    if (initial_volume < 0)
+      initial_volume = interface_measures::volume_and_area(alpha).solid_volume;
+  }
+
+  template <int dim>
+  void
   VolumeCorrection<dim>::add_velocity(const LevelSetField<dim> &alpha,
                                       const double,
                                       const double,
                                       VelocityField<dim> &)
   {
-    // Nothing to add to the step itself; the first state the time loop
-    // asks about (t = 0, after any set_level_set()) is the volume to keep.
-    if (initial_volume < 0)
-      initial_volume = interface_measures::volume_and_area(alpha).solid_volume;
+    // Nothing to add to the step itself: the correction follows it.
+    keep_initial_volume(alpha);
+  }
+
+  template <int dim>
+  void
+  VolumeCorrection<dim>::add_probe_velocity(const LevelSetField<dim> &alpha,
+                                            const double,
+                                            VelocityField<dim> &)
+  {
+    keep_initial_volume(alpha);
   }
 
   template <int dim>

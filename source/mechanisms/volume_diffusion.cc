@@ -106,15 +106,13 @@ namespace levelsinter
     h_min = GridTools::minimal_cell_diameter(
               alpha.dof_handler().get_triangulation()) /
             std::sqrt(double(dim));
-    solved_time = -1;
   }
 
   template <int dim>
   void
-  VolumeDiffusion<dim>::advance_displacement()
+  VolumeDiffusion<dim>::accept_step(const LevelSetField<dim> &)
   {
-    operator_->advance_displacement(solved_step);
-    solved_time = -1;
+    operator_->advance_displacement(trial_step);
   }
 
   template <int dim>
@@ -122,12 +120,7 @@ namespace levelsinter
   VolumeDiffusion<dim>::add_state(const LevelSetField<dim> &,
                                   StateTransfer<dim>       &transfer)
   {
-    // The time loop adapts the mesh after an accepted step.
-    if (solved_time >= 0)
-      advance_displacement();
-    carried_displacement = as_plain_vector(operator_->displacement(),
-                                           operator_->dof_handler());
-    transfer.add(operator_->dof_handler(), {&carried_displacement});
+    transfer.add(operator_->dof_handler(), {&operator_->displacement()});
   }
 
   template <int dim>
@@ -137,30 +130,27 @@ namespace levelsinter
                                      const double              dt,
                                      VelocityField<dim>       &velocity)
   {
-    if (solved_time >= 0 && t > solved_time)
-      advance_displacement();
-    if (carried_displacement.size() > 0)
-      {
-        // Back from the mesh change (add_state()).
-        auto &u = operator_->displacement();
-        typename TwoPhaseStokes<dim>::BlockVector owned;
-        std::vector<IndexSet> partitioning;
-        for (unsigned int b = 0; b < u.n_blocks(); ++b)
-          partitioning.push_back(u.block(b).locally_owned_elements());
-        owned.reinit(partitioning, operator_->dof_handler().get_communicator());
-        for (const auto i : operator_->dof_handler().locally_owned_dofs())
-          owned(i) = carried_displacement(i);
-        owned.compress(VectorOperation::insert);
-        u = owned;
-        carried_displacement.clear();
-      }
+    trial_step = dt * seconds_per_time_unit;
+    solve_velocity(alpha, t, trial_step, velocity);
+  }
 
-    // dt = 0: the time loop's first look at the speed. The rate form needs
-    // a step; where eta_f / (G dt) is small the elastic pressure does not
-    // depend on it (paper Sect. 6.6: below 2e-5 the atmosphere does not
-    // disturb the grains), so take the step at which that ratio is 1e-5.
-    const double dt_seconds = dt * seconds_per_time_unit;
-    phases->set_time_step(dt > 0 ? dt_seconds : probe_step);
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::add_probe_velocity(const LevelSetField<dim> &alpha,
+                                           const double              t,
+                                           VelocityField<dim> &velocity)
+  {
+    solve_velocity(alpha, t, probe_step, velocity);
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::solve_velocity(const LevelSetField<dim> &alpha,
+                                       const double              t,
+                                       const double              step_seconds,
+                                       VelocityField<dim>       &velocity)
+  {
+    phases->set_time_step(step_seconds);
     {
       TimerOutput::Scope scope(timer, "volume diffusion: elastic assembly");
       operator_->assemble(alpha,
@@ -172,11 +162,6 @@ namespace levelsinter
       TimerOutput::Scope scope(timer, "volume diffusion: elastic solve");
       mechanics_iterations = operator_->solve();
     }
-    if (dt > 0)
-      {
-        solved_time = t;
-        solved_step = dt_seconds;
-      }
 
     const unsigned int unsourced_before = extension.unsourced_interface_cells();
     xi_iterations = extension.solve(alpha,

@@ -5,9 +5,8 @@
 
 #include <deal.II/grid/grid_tools.h>
 
-#include <levelsinter/analysis/neck.h>
-#include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/analysis/scene_postprocessors.h>
 #include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/io/checkpoint.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
@@ -15,6 +14,8 @@
 
 #include <boost/archive/text_iarchive.hpp>
 #include <boost/archive/text_oarchive.hpp>
+#include <boost/serialization/map.hpp>
+#include <boost/serialization/string.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -121,6 +122,15 @@ namespace levelsinter
                    scene.band_cell_size() :
                    0.},
                 timer_output)
+    , postprocessors(make_scene_postprocessors<dim>(scene,
+                                                    mechanisms,
+                                                    curvature_driven,
+                                                    comm,
+                                                    timer_output))
+    , metrics_interval{scene.output.metrics_interval, true, true}
+    , field_interval{scene.output.field_interval, true, true}
+    , progress_interval{scene.output.progress_interval, false, true}
+    , checkpoint_interval{scene.output.checkpoint_interval, false, false}
     , field_output(scene.output.directory,
                    scene.output.write_vtu,
                    scene.output.write_xdmf)
@@ -184,16 +194,23 @@ namespace levelsinter
     archive &step &t &interface_speed &total_iterations &last_iterations;
     archive &under_resolved_cells &resolved_again_reported;
     archive &summary.max_cells &summary.max_dofs &summary.rejected_steps;
-    archive &summary.initial_solid_volume
-      &summary.curvature_under_resolved_until;
+    archive &summary.curvature_under_resolved_until;
     archive &metrics_rows &field_output;
     if (Archive::is_loading::value)
       kept_metrics_rows = metrics_rows;
-    // resume() creates the analyses before loading.
-    if (packing_analysis)
-      archive &*packing_analysis;
-    if (particle_centres)
-      archive &*particle_centres;
+    // The postprocessors' state (pore tracking, reference volume and
+    // centres, ...) by name.
+    std::map<std::string, std::string> states;
+    for (const auto &postprocessor : postprocessors)
+      states[postprocessor->name()] = postprocessor->save();
+    archive &states;
+    if (Archive::is_loading::value)
+      for (const auto &postprocessor : postprocessors)
+        {
+          const auto state = states.find(postprocessor->name());
+          if (state != states.end() && !state->second.empty())
+            postprocessor->load(state->second);
+        }
   }
 
   template <int dim>
@@ -262,8 +279,7 @@ namespace levelsinter
   bool
   Simulation<dim>::checkpoint_due(const unsigned int step) const
   {
-    if (scene.output.checkpoint_interval > 0 &&
-        step % scene.output.checkpoint_interval == 0)
+    if (checkpoint_interval.due(step, false))
       return true;
     if (scene.output.checkpoint_minutes == 0)
       return false;
@@ -280,17 +296,6 @@ namespace levelsinter
   void
   Simulation<dim>::resume(const std::string &checkpoint_folder)
   {
-    // Their pore tracking and shrinkage and centre references are in the
-    // counters.
-    const auto &particles = scene.geometry.particles;
-    if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
-      {
-        packing_analysis = std::make_unique<PackingAnalysis<dim>>(scene, comm);
-        if (scene.geometry.particles_are_bodies() &&
-            particles.size() >= 2)
-          particle_centres = std::make_unique<ParticleCentres<dim>>(
-            particles, scene.domain, comm);
-      }
     // Triangulation::load() wants the coarse mesh of the run.
     make_box_mesh(tria, scene.domain);
     tria.load(checkpoint_folder + "/mesh");
@@ -412,12 +417,39 @@ namespace levelsinter
 
   template <int dim>
   void
-  Simulation<dim>::compute_interface_velocity(const double t, const double dt)
+  Simulation<dim>::sum_velocities(
+    const std::function<void(Mechanism<dim> &)> &add)
   {
     velocity.set_zero();
     for (auto &mechanism : mechanisms)
-      mechanism->add_velocity(alpha, t, dt, velocity);
+      add(*mechanism);
     interface_speed = speed_near_interface();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::compute_interface_velocity(const double t, const double dt)
+  {
+    sum_velocities([&](Mechanism<dim> &mechanism) {
+      mechanism.add_velocity(alpha, t, dt, velocity);
+    });
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::probe_interface_velocity(const double t)
+  {
+    sum_velocities([&](Mechanism<dim> &mechanism) {
+      mechanism.add_probe_velocity(alpha, t, velocity);
+    });
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::reject_trial_step()
+  {
+    for (auto &mechanism : mechanisms)
+      mechanism->reject_step();
   }
 
   template <int dim>
@@ -481,126 +513,29 @@ namespace levelsinter
     if (step > 0)
       remaining_time.add_step(t, dt, wall);
 
-    if (step == 0 || final_step || step % scene.output.metrics_interval == 0)
+    if (metrics_interval.due(step, final_step))
       {
-        TimerOutput::Scope scope(timer_output, "metrics");
-        const auto measures = interface_measures::volume_and_area(alpha);
-        if (step == 0)
-          summary.initial_solid_volume = measures.solid_volume;
-        std::vector<double> row = {double(step),
-                                   t,
-                                   dt,
-                                   double(cells),
-                                   double(dofs),
-                                   measures.solid_volume,
-                                   (measures.solid_volume -
-                                    summary.initial_solid_volume) /
-                                     summary.initial_solid_volume,
-                                   measures.interface_area,
-                                   velocity.max_norm(),
-                                   double(last_iterations),
-                                   wall};
-        if (curvature_driven)
-          row.push_back(under_resolved_cells);
-        const std::size_t columns_before_neck = row.size();
-        // Pores, density, all necks, coordination, shrinkage (doc/user_guide.md).
-        const auto         &particles = scene.geometry.particles;
-        std::vector<double> packing_row;
-        if (scene.analysis.enabled(scene.geometry.shape, particles.size()))
+        TimerOutput::Scope    scope(timer_output, "metrics");
+        const StepRecord<dim> step_record{step,
+                                          t,
+                                          dt,
+                                          alpha,
+                                          velocity,
+                                          h_min,
+                                          last_iterations,
+                                          wall,
+                                          under_resolved_cells};
+        std::vector<double> row;
+        for (const auto &postprocessor : postprocessors)
           {
-            TimerOutput::Scope scope(timer_output, "packing analysis");
-            if (!packing_analysis)
-              packing_analysis =
-                std::make_unique<PackingAnalysis<dim>>(scene, comm);
-            packing_row = packing_analysis->measure(step, t, alpha);
-          }
-        // The neck of two particles; in a packing the smallest neck over
-        // the pairs that overlap at t = 0 (the packing analysis' necks if
-        // it ran: the same pairs).
-        if (scene.geometry.particles_are_bodies() &&
-            particles.size() >= 2)
-          {
-            const double neck =
-              packing_analysis ?
-                neck_measures::smallest_neck_radius(packing_analysis->necks()) :
-                neck_measures::smallest_neck_radius(alpha, particles);
-            if (!std::isnan(neck))
-              row.push_back(neck);
-          }
-        const bool has_neck = row.size() > columns_before_neck;
-        // An equal pair: the curvature of its neck (from a fit over a few
-        // finest cells) and the mechanisms' fields at the neck (the
-        // viscoelastic seed's Figs. 8, 11, 13), read one finest cell inside
-        // the interface: on it the Q1 fields mix the particle's nodes with
-        // the atmosphere's.
-        const bool has_neck_shape = has_neck && particles.size() == 2 &&
-                                    particles[0][dim] == particles[1][dim];
-        std::optional<neck_measures::NeckShape<dim>> neck_shape;
-        if (has_neck_shape)
-          {
-            Point<dim> c1, c2;
-            for (unsigned int d = 0; d < dim; ++d)
-              {
-                c1[d] = particles[0][d];
-                c2[d] = particles[1][d];
-              }
-            neck_shape = neck_measures::neck_shape(alpha, c1, c2, h_min);
-            row.push_back(neck_shape->curvature);
-          }
-        for (const auto &mechanism : mechanisms)
-          for (const double value : mechanism->metric_values())
-            row.push_back(value);
-        if (neck_shape)
-          for (const auto &mechanism : mechanisms)
-            for (const double value :
-                 mechanism->point_metric_values(alpha,
-                                                neck_shape->inner_point))
-              row.push_back(value);
-        row.insert(row.end(), packing_row.begin(), packing_row.end());
-        // Densification: the approach of the particle centres.
-        if (packing_analysis &&
-            scene.geometry.particles_are_bodies() &&
-            particles.size() >= 2)
-          {
-            TimerOutput::Scope scope(timer_output, "packing analysis");
-            if (!particle_centres)
-              particle_centres = std::make_unique<ParticleCentres<dim>>(
-                particles, scene.domain, comm);
-            for (const double value :
-                 particle_centres->measure(alpha, packing_analysis->necks()))
-              row.push_back(value);
+            const auto &values = postprocessor->values(step_record);
+            row.insert(row.end(), values.begin(), values.end());
           }
         if (!metrics)
           {
-            std::vector<std::string> columns = {"step",
-                                                "time",
-                                                "dt",
-                                                "cells",
-                                                "dofs",
-                                                "solid_volume",
-                                                "volume_change",
-                                                "interface_area",
-                                                "max_velocity",
-                                                "transport_iterations",
-                                                "wall_time"};
-            if (curvature_driven)
-              columns.push_back("under_resolved_curvature_cells");
-            if (has_neck)
-              columns.push_back("neck_radius");
-            if (has_neck_shape)
-              columns.push_back("neck_curvature");
-            for (const auto &mechanism : mechanisms)
-              for (const auto &name : mechanism->metric_names())
-                columns.push_back(name);
-            if (has_neck_shape)
-              for (const auto &mechanism : mechanisms)
-                for (const auto &name : mechanism->point_metric_names())
-                  columns.push_back("neck_" + name);
-            if (packing_analysis)
-              for (const auto &name : packing_analysis->column_names())
-                columns.push_back(name);
-            if (particle_centres)
-              for (const auto &name : particle_centres->column_names())
+            std::vector<std::string> columns;
+            for (const auto &postprocessor : postprocessors)
+              for (const auto &name : postprocessor->column_names())
                 columns.push_back(name);
             metrics = std::make_unique<MetricsLog>(scene.output.directory +
                                                      "/metrics.csv",
@@ -611,9 +546,7 @@ namespace levelsinter
         metrics->add_row(row);
       }
 
-    if (step == 0 || final_step ||
-        (scene.output.field_interval > 0 &&
-         step % scene.output.field_interval == 0))
+    if (field_interval.due(step, final_step))
       {
         TimerOutput::Scope scope(timer_output, "output");
         field_output.write(step,
@@ -625,9 +558,7 @@ namespace levelsinter
                            });
       }
 
-    if ((scene.output.progress_interval > 0 &&
-         step % scene.output.progress_interval == 0) ||
-        final_step)
+    if (progress_interval.due(step, final_step))
       {
         // The run ends at the end time or after the step limit, whichever
         // comes first.
@@ -678,6 +609,7 @@ namespace levelsinter
                                    k < 5;
                ++k)
             {
+              reject_trial_step();
               dt = std::min(dt, choose_time_step(t));
               compute_interface_velocity(t, dt);
             }
@@ -691,6 +623,7 @@ namespace levelsinter
         }
       catch (const std::exception &failure)
         {
+          reject_trial_step();
           if (retry == max_retries)
             {
               // Back to the last accepted state, which run() saves.
@@ -738,7 +671,7 @@ namespace levelsinter
     if (step == 0)
       {
         check_curvature_resolution(t);
-        compute_interface_velocity(t, 0);
+        probe_interface_velocity(t);
         record(step, t, 0, scene.time.end_time == 0);
       }
     else

@@ -4,10 +4,12 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <functional>
 #include <memory>
+#include <variant>
 #include <vector>
 
 namespace levelsinter
@@ -35,21 +37,30 @@ namespace levelsinter
    * After interpolate() or deserialize() each vector is ghosted on its DoFHandler's new
    * locally owned and relevant DoFs, with the hanging-node constraints of
    * that DoFHandler distributed (no other constraints: boundary values are
-   * the owner's business).
+   * the owner's business). Block vectors (a velocity-pressure system's
+   * displacement) keep their blocks: their owner sizes them on the new
+   * DoFs, ghosted, when it distributes the DoFs again.
    */
   template <int dim>
   class StateTransfer
   {
   public:
-    using Vector = TrilinosWrappers::MPI::Vector;
+    using Vector      = TrilinosWrappers::MPI::Vector;
+    using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
     /**
      * Keep @p vectors (ghosted, sized to @p dof_handler) across the next
      * mesh change. The DoFHandler must be the object the owner distributes
-     * again afterwards, alive until interpolate().
+     * again afterwards, alive until interpolate(). The order of the calls
+     * is the order of a checkpoint's data: a restart repeats it.
      */
     void
     add(const DoFHandler<dim> &dof_handler, const std::vector<Vector *> &vectors);
+
+    /** The same for block vectors, whose owner sizes them on the new DoFs. */
+    void
+    add(const DoFHandler<dim>            &dof_handler,
+        const std::vector<BlockVector *> &vectors);
 
     void
     prepare_for_coarsening_and_refinement();
@@ -67,26 +78,34 @@ namespace levelsinter
     deserialize();
 
   private:
-    using Transfer = parallel::distributed::SolutionTransfer<dim, Vector>;
+    // The vectors of one DoFHandler and their transfer.
+    template <class VectorType>
     struct Entry
     {
-      const DoFHandler<dim>    *dof_handler;
-      std::vector<Vector *>     vectors;
-      std::unique_ptr<Transfer> transfer;
+      using Transfer =
+        parallel::distributed::SolutionTransfer<dim, VectorType>;
+      const DoFHandler<dim>     *dof_handler;
+      std::vector<VectorType *>  vectors;
+      std::unique_ptr<Transfer>  transfer;
     };
-    std::vector<Entry> entries;
+    std::vector<std::variant<Entry<Vector>, Entry<BlockVector>>> entries;
 
-    // One SolutionTransfer per entry, given its vectors by @p prepare.
+    template <class VectorType>
     void
-    attach(const std::function<void(Transfer &,
-                                    const std::vector<const Vector *> &)>
-             &prepare);
+    add_entry(const DoFHandler<dim>           &dof_handler,
+              const std::vector<VectorType *> &vectors);
+
+    // A SolutionTransfer for the entry, given its vectors for a mesh change
+    // or a checkpoint.
+    template <class VectorType>
+    static void
+    attach(Entry<VectorType> &entry, const bool for_serialization);
 
     // Fill the entries' vectors, ghosted and with hanging nodes distributed,
-    // from owned-only vectors that @p fill writes (interpolate or
-    // deserialize).
-    void
-    fill_vectors(
-      const std::function<void(Entry &, std::vector<Vector *> &)> &fill);
+    // from owned-only vectors that the entry's transfer writes
+    // (@p deserialize: from the checkpoint, else by interpolation).
+    template <class VectorType>
+    static void
+    fill_vectors(Entry<VectorType> &entry, const bool deserialize);
   };
 } // namespace levelsinter

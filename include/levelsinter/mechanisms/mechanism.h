@@ -18,6 +18,13 @@ namespace levelsinter
    * mechanisms a scene switches on and asks each for its share of the
    * interface velocity; a mechanism a scene does not list is never built, so
    * nothing it needs (a Stokes system, a curvature solve) is assembled.
+   *
+   * A step is a trial until the time loop decides: add_velocity() (possibly
+   * several times for the same t, with a smaller dt each time) -> after the
+   * transport check_step() and add_correction_velocity() -> accept_step(),
+   * which makes the trial the mechanism's state; or reject_step() at any
+   * point, which drops it. The state a mesh change or a checkpoint carries
+   * (add_state()) is always that of the last accepted step.
    */
   template <int dim>
   class Mechanism
@@ -60,15 +67,27 @@ namespace levelsinter
     {}
 
     /**
-     * Add this mechanism's velocity for the step t -> t + dt, computed from
-     * the level set at t, to @p velocity (which holds the sum of the
-     * mechanisms before this one).
+     * Add this mechanism's velocity for the trial step t -> t + dt (dt > 0),
+     * computed from the level set at t and the state of the last accepted
+     * step, to @p velocity (which holds the sum of the mechanisms before
+     * this one).
      */
     virtual void
     add_velocity(const LevelSetField<dim> &alpha,
                  const double              t,
                  const double              dt,
                  VelocityField<dim>       &velocity) = 0;
+
+    /**
+     * The speed probe: add the velocity at t before any step is taken (the
+     * time loop's first look at the speed, which chooses the first step),
+     * with no step size and no step-dependent terms. Changes no state and
+     * is neither accepted nor rejected.
+     */
+    virtual void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) = 0;
 
     /**
      * After a step has been accepted (check_step()): add to @p velocity a
@@ -105,12 +124,20 @@ namespace levelsinter
     {}
 
     /**
-     * The step has been accepted (check_step() and the corrections passed):
-     * what add_velocity() advanced becomes the mechanism's state, before the
-     * metrics of the step are recorded.
+     * The trial step has been accepted (check_step() and the corrections
+     * passed): what the last add_velocity() advanced becomes the
+     * mechanism's state, before the metrics of the step are recorded.
      */
     virtual void
     accept_step(const LevelSetField<dim> &)
+    {}
+
+    /**
+     * The trial step is dropped (a failed check or solve, or a step chosen
+     * again smaller): the state stays that of the last accepted step.
+     */
+    virtual void
+    reject_step()
     {}
 
     /**

@@ -45,6 +45,11 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
   private:
     std::unique_ptr<Function<dim>> function;
     const double                   theta;

@@ -41,13 +41,23 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    /** kappa and v_s of the level set alone (no lag, no coupling). */
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
+    /** The step's v_s becomes v_s^{n-1} of the next (Eq. 81). */
+    void
+    accept_step(const LevelSetField<dim> &alpha) override;
+
     bool
     curvature_driven() const override
     {
       return true;
     }
 
-    /** The v_s of the last solve becomes v_s^{n-1} on the new mesh. */
+    /** v_s^{n-1} of the next step goes to the new mesh. */
     void
     add_state(const LevelSetField<dim> &alpha,
               StateTransfer<dim>       &transfer) override;
@@ -71,13 +81,13 @@ namespace levelsinter
     }
 
     /**
-     * v_s^{n-1}, the lagged velocity of A^n (Eq. 81) the next step uses;
-     * empty before the first step.
+     * The lagged velocity v_s^{n-1} of A^n (Eq. 81) that the last accepted
+     * step used; empty before the first step.
      */
     const TrilinosWrappers::MPI::Vector &
     lagged_velocity() const
     {
-      return previous_velocity;
+      return lag_of_last_step;
     }
 
     /** The coefficient of Delta_s kappa in the time unit of the scene. */
@@ -88,15 +98,19 @@ namespace levelsinter
     }
 
   private:
+    // v = v_s N_alpha (Eq. 84) of the last solve, added to @p velocity.
+    void
+    add_normal_velocity(const LevelSetField<dim> &alpha,
+                        VelocityField<dim>       &velocity) const;
+
     const double              mobility;
     MixedCurvatureSolver<dim> solver;
     TimerOutput              &timer;
-    // v_s^{n-1} for A^n (Eq. 81), and the time of the last solve on this
-    // mesh (-1: none): the time loop may ask twice for the same t
-    // (step-size retry), and then the previous step's v_s must still be the
-    // lagged one.
+    // v_s^{n-1} for A^n (Eq. 81): the v_s of the last accepted step, which
+    // every trial of the next step uses; and the one the last accepted
+    // step used.
     TrilinosWrappers::MPI::Vector previous_velocity;
-    double                        solved_time = -1;
-    unsigned int                  iterations  = 0;
+    TrilinosWrappers::MPI::Vector lag_of_last_step;
+    unsigned int                  iterations = 0;
   };
 } // namespace levelsinter

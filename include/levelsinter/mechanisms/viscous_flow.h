@@ -60,6 +60,13 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    /** The Stokes velocity with the surface tension explicit and no
+     * polymer stress update. */
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
     bool
     curvature_driven() const override
     {
@@ -111,6 +118,9 @@ namespace levelsinter
     void
     accept_step(const LevelSetField<dim> &alpha) override;
 
+    void
+    reject_step() override;
+
     /** A viscoelastic melt: tr c (the polymer stretch) at the point. */
     std::vector<std::string>
     point_metric_names() const override;
@@ -146,6 +156,14 @@ namespace levelsinter
     }
 
   private:
+    // Solve the Stokes problem for the step dt (0: the probe, no step:
+    // explicit surface tension, no history, no polymer stress update) and
+    // add its velocity.
+    void
+    solve_velocity(const LevelSetField<dim> &alpha,
+                   const double              dt,
+                   VelocityField<dim>       &velocity);
+
     void
     update_curvature(const LevelSetField<dim> &alpha);
 
@@ -190,10 +208,10 @@ namespace levelsinter
     std::array<TrilinosWrappers::MPI::Vector, 3> stretches;
     double                                      max_trace_c = 3;
     double                               h_min           = 0;
-    // Interface measure at the start of the step from step_start_time, kept
-    // for the CFL re-choice and the retries of that step.
+    // Interface measure at the start of the step (check_step()), measured
+    // at its first trial and kept for its CFL re-choice and retries.
     interface_measures::VolumeAndArea measures_at_step_start;
-    double step_start_time    = -1;
+    bool step_started = false;
     unsigned int                         last_iterations = 0;
     // CPU seconds of the last solve (preconditioner setup included),
     // summed over the ranks: unlike wall time it does not depend on what

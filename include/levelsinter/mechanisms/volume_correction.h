@@ -44,6 +44,11 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
     bool
     add_correction_velocity(const LevelSetField<dim> &alpha,
                             const double              dt,
@@ -56,6 +61,11 @@ namespace levelsinter
     metric_values() const override;
 
   private:
+    // The first volume seen (t = 0 after any set_level_set(), or the
+    // resumed state) is the one to keep.
+    void
+    keep_initial_volume(const LevelSetField<dim> &alpha);
+
     // Mirrored normals on these faces (nodal_normals()).
     const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                  filter;

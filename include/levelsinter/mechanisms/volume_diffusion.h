@@ -58,6 +58,21 @@ namespace levelsinter
                  const double              dt,
                  VelocityField<dim>       &velocity) override;
 
+    /**
+     * The rate form needs a step; where eta_f / (G dt) is small the elastic
+     * pressure does not depend on it (paper Sect. 6.6: below 2e-5 the
+     * atmosphere does not disturb the grains), so the probe takes the step
+     * at which that ratio is 1e-5.
+     */
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
+    /** u^n = u^{n-1} + dt v^n with the step's elastic velocity (Eq. 92). */
+    void
+    accept_step(const LevelSetField<dim> &alpha) override;
+
     /** The displacement u^{n-1} of the next step on the new mesh. */
     void
     add_state(const LevelSetField<dim> &alpha,
@@ -107,9 +122,13 @@ namespace levelsinter
     }
 
   private:
-    // u^n = u^{n-1} + dt v^n with the last (accepted) solve.
+    // Solve the elastic problem with the step @p step_seconds and add
+    // v = -C_v xi N (Eq. 112).
     void
-    advance_displacement();
+    solve_velocity(const LevelSetField<dim> &alpha,
+                   const double              t,
+                   const double              step_seconds,
+                   VelocityField<dim>       &velocity);
 
     const double                          coefficient; // C_v, scene time
     // The elastic problem runs in seconds (eta_f in MPa s, Eq. 92-94)
@@ -117,23 +136,15 @@ namespace levelsinter
     const double                          seconds_per_time_unit;
     typename TwoPhaseStokes<dim>::Settings settings;
     const std::unique_ptr<PhaseLaw<dim>>  phases;
-    const double                          probe_step; // dt when given 0
+    const double                          probe_step; // seconds
     // f / ((2/3)(1 + nu) C_v gamma) of time_step_limit(); 0: no limit.
     const double                          limit_per_h3;
     double                                h_min = 0; // after setup()
     TimerOutput                          &timer;
     std::unique_ptr<TwoPhaseStokes<dim>>  operator_;
     NormalGradientExtension<dim>          extension;
-    // The displacement as one plain vector on the elastic problem's
-    // DoFHandler while the mesh changes (StateTransfer carries plain
-    // vectors); copied back into the block vector at the next step.
-    TrilinosWrappers::MPI::Vector carried_displacement;
-    // Time and step of the last solve on this mesh (-1: none). The time
-    // loop may solve a step again with a smaller dt; only the last solve at
-    // a time is the accepted one, known once a later time is asked for or
-    // the mesh changes.
-    double       solved_time          = -1;
-    double       solved_step          = 0; // in seconds
+    // The step of the last trial, in seconds.
+    double       trial_step           = 0;
     unsigned int mechanics_iterations = 0;
     unsigned int xi_iterations        = 0;
     bool         warned_unsourced     = false;

@@ -5,8 +5,7 @@
 
 #include <deal.II/distributed/tria.h>
 
-#include <levelsinter/analysis/packing_analysis.h>
-#include <levelsinter/analysis/particle_centres.h>
+#include <levelsinter/analysis/postprocessor.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
@@ -18,6 +17,7 @@
 #include <levelsinter/level_set/velocity_field.h>
 #include <levelsinter/scene/scene_parameters.h>
 #include <levelsinter/time/remaining_time.h>
+#include <levelsinter/time/step_interval.h>
 
 #include <chrono>
 #include <functional>
@@ -59,7 +59,6 @@ namespace levelsinter
       unsigned int max_dofs             = 0;
       double       mean_iterations      = 0;
       unsigned int rejected_steps       = 0; // retried with a smaller dt
-      double       initial_solid_volume = 0;
       /** Last time the curvature was under-resolved (-1: never; only for
        *  curvature-driven mechanisms). */
       double curvature_under_resolved_until = -1;
@@ -166,8 +165,19 @@ namespace levelsinter
     choose_time_step(const double t) const;
     double
     speed_near_interface() const;
+    // velocity = the sum over the mechanisms of what @p add adds.
+    void
+    sum_velocities(const std::function<void(Mechanism<dim> &)> &add);
+    // The mechanisms' velocities for the trial step t -> t + dt.
     void
     compute_interface_velocity(const double t, const double dt);
+    // Their velocities at t before any step, for the first step size
+    // (Mechanism::add_probe_velocity()).
+    void
+    probe_interface_velocity(const double t);
+    // Every mechanism drops its trial step (Mechanism::reject_step()).
+    void
+    reject_trial_step();
     unsigned int
     correct_step(const double dt);
     double
@@ -207,10 +217,13 @@ namespace levelsinter
     std::unique_ptr<Function<dim>>            initial_distance;
     InterfaceBandRefinement<dim>              band_refinement;
     ConvectiveReinitialization<dim>           transport;
+    // The metrics.csv columns, in order; the log is made at the first row.
+    std::vector<std::unique_ptr<Postprocessor<dim>>> postprocessors;
     std::unique_ptr<MetricsLog>               metrics;
-    // Made at the first metrics row if the scene asks for it.
-    std::unique_ptr<PackingAnalysis<dim>>     packing_analysis;
-    std::unique_ptr<ParticleCentres<dim>>     particle_centres;
+    const StepInterval                        metrics_interval;
+    const StepInterval                        field_interval;
+    const StepInterval                        progress_interval;
+    const StepInterval                        checkpoint_interval;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;
