@@ -5,7 +5,8 @@ A committed history there can be the product of hours of runs (the
 study test that stops earlier (12 steps) must not replace it. So a study
 refuses to replace a file in a validation_data folder that holds more data
 rows than the one it would write, unless LEVELSINTER_REPLACE_SHORTER=1 is
-set in the environment (doc/validation.md, "Validation data"). Outside a
+set in the environment (doc/validation.md, "The paper's 154-particle
+packings"). Outside a
 validation_data folder (a build tree) files are replaced as usual.
 
     import validation_data
