@@ -98,33 +98,40 @@ namespace levelsinter
       }
 
       // Write the manifest of every file in @p checkpoint_folder, into a
-      // temporary file renamed at the end; returns an error or "".
+      // temporary file renamed at the end; returns an error or "" (rank 0
+      // alone runs this: it must not throw past the others).
       std::string
       write_manifest(const fs::path &checkpoint_folder)
       {
-        std::vector<fs::path> files;
-        for (const auto &entry : fs::directory_iterator(checkpoint_folder))
-          if (entry.is_regular_file())
-            files.push_back(entry.path());
-        std::sort(files.begin(), files.end());
-        std::ostringstream body;
-        body << manifest_header << '\n';
-        for (const auto &file : files)
-          body << file.filename().string() << ' ' << fs::file_size(file)
-               << ' ' << crc32(file) << '\n';
-        const fs::path manifest  = checkpoint_folder / manifest_name;
-        const fs::path temporary = manifest.string() + ".tmp";
-        {
-          std::ofstream out(temporary, std::ios::binary);
-          out << body.str() << "end " << crc32(body.str()) << '\n';
-          if (!out)
-            return "cannot write '" + temporary.string() + "'";
-        }
-        std::error_code ec;
-        fs::rename(temporary, manifest, ec);
-        if (ec)
-          return "cannot rename '" + temporary.string() + "': " + ec.message();
-        return "";
+        try
+          {
+            std::vector<fs::path> files;
+            for (const auto &entry :
+                 fs::directory_iterator(checkpoint_folder))
+              if (entry.is_regular_file())
+                files.push_back(entry.path());
+            std::sort(files.begin(), files.end());
+            std::ostringstream body;
+            body << manifest_header << '\n';
+            for (const auto &file : files)
+              body << file.filename().string() << ' ' << fs::file_size(file)
+                   << ' ' << crc32(file) << '\n';
+            const fs::path manifest  = checkpoint_folder / manifest_name;
+            const fs::path temporary = manifest.string() + ".tmp";
+            {
+              std::ofstream out(temporary, std::ios::binary);
+              out << body.str() << "end " << crc32(body.str()) << '\n';
+              if (!out)
+                return "cannot write '" + temporary.string() + "'";
+            }
+            fs::rename(temporary, manifest);
+            return "";
+          }
+        catch (const std::exception &e)
+          {
+            return "cannot write the manifest of '" +
+                   checkpoint_folder.string() + "': " + e.what();
+          }
       }
     } // namespace
 
