@@ -21,6 +21,8 @@ from collections import defaultdict
 
 import matplotlib
 
+import validation_data
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
@@ -75,6 +77,7 @@ for m in metrics:
         row[c] = float(m.get(c, "nan"))
     table.append(row)
 
+validation_data.refuse_shorter(options["--csv"], table)
 with open(options["--csv"], "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=columns)
     writer.writeheader()

@@ -19,6 +19,8 @@ import sys
 
 import matplotlib
 
+import validation_data
+
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 
@@ -37,6 +39,7 @@ for path in inputs:
     rows += list(csv.DictReader(open(path)))
 columns = list(rows[0].keys())
 rows.sort(key=lambda r: (float(r["particles"]), float(r["ranks"])))
+validation_data.refuse_shorter(out_csv, rows)
 with open(out_csv, "w", newline="") as f:
     writer = csv.DictWriter(f, fieldnames=columns)
     writer.writeheader()

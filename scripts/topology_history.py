@@ -33,6 +33,8 @@ import os
 import re
 import sys
 
+import validation_data
+
 
 def arguments(argv):
     options = {"--csv": None, "--times": "0.01,0.05,0.1,0.2,0.5,1"}
@@ -125,6 +127,7 @@ def history(level, directory, csv_name, times):
         "max_trace_c": column(rows, "max_trace_c"),
         "neck_trace_c": column(rows, "neck_trace_c"),
     }
+    validation_data.refuse_shorter(f"{csv_name}.level{level}.csv", len(t))
     with open(f"{csv_name}.level{level}.csv", "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(series.keys())
@@ -180,6 +183,7 @@ def main():
     columns = []
     for row in table:
         columns += [c for c in row if c not in columns]
+    validation_data.refuse_shorter(csv_name, table)
     with open(csv_name, "w", newline="") as f:
         writer = csv.writer(f)
         writer.writerow(columns)

@@ -58,7 +58,8 @@ namespace
     return out.str();
   }
 
-  // Returns the exit code: 0, or 128 + the signal that stopped the run.
+  // Returns the exit code: 0, or 128 + the signal that stopped the run
+  // (doc/user_guide.md, "Exit codes").
   template <int dim>
   int
   run(const SceneParameters &scene,
@@ -104,13 +105,16 @@ namespace
                                               comm);
             }
           else
-            simulation->resume(checkpoint::newest(scene.output.directory));
+            simulation->resume(checkpoint::newest_verified(
+              scene.output.directory, comm, std::cout));
           started            = true;
           const auto summary = simulation->run();
           stop_signal        = summary.stop_signal;
           if (root && stop_signal != 0)
             std::cout << "stopped by "
-                      << (stop_signal == SIGINT ? "SIGINT" : "SIGTERM")
+                      << (stop_signal == SIGINT  ? "SIGINT" :
+                          stop_signal == SIGTERM ? "SIGTERM" :
+                                                   "SIGUSR1")
                       << " at step " << summary.steps
                       << ", t = " << summary.time << "; metrics.csv is "
                       << "complete up to that step\n";

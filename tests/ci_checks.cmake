@@ -91,6 +91,11 @@ add_test(NAME validation_index
   COMMAND ${Python3_EXECUTABLE}
     ${CMAKE_SOURCE_DIR}/scripts/check_validation_index.py ${CMAKE_SOURCE_DIR}
     ${CMAKE_BINARY_DIR} ${CMAKE_CTEST_COMMAND})
+# A study does not replace a longer history there with a shorter one
+# unless LEVELSINTER_REPLACE_SHORTER=1 (scripts/validation_data.py).
+add_test(NAME validation_data_keeps_longer_history
+  COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/validation_data_guard_test.sh
+    ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/validation_data_guard)
 
 # --- Command line and bad input ------------------------------------------
 add_test(NAME help COMMAND levelsinter --help)

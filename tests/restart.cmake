@@ -99,3 +99,19 @@ restart_test(restart_closed_pore_packing_np1_np1
 restart_test(restart_closed_pore_packing_np1_np2
   ${VISCOUS_SCENES}/closed_pore_2d.prm 1 2 1e-6
   "${RESTART_PORE_IGNORED};cells;dofs" ${RESTART_PORE_ARGS})
+# A damaged checkpoint is refused and the previous one used (issue 29):
+# the circle translation to step 10 with checkpoints at steps 5 and 10, on
+# 1 and 2 ranks; each file of a checkpoint (the mesh files, counters.txt,
+# the manifest) truncated, missing and with one byte inverted, in the newest
+# checkpoint (resumed from step 5, metrics.csv as the undamaged run's) and
+# in both (exit 1, nothing changed); tests/checkpoint_damage_test.sh.
+foreach(np 1 2)
+  foreach(file mesh mesh.info mesh_fixed.data counters.txt manifest.txt)
+    string(REPLACE "." "_" id ${file})
+    add_test(NAME restart_damaged_${id}_np${np}
+      COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/checkpoint_damage_test.sh
+      $<TARGET_FILE:levelsinter> $<TARGET_FILE:compare_metrics> ${MPIRUN}
+      "${MPIRUN_FLAGS}" ${SCENE} ${np}
+      ${CMAKE_CURRENT_BINARY_DIR}/restart_damaged_${id}_np${np} ${file})
+  endforeach()
+endforeach()

@@ -89,8 +89,9 @@ namespace levelsinter
            "that holds an earlier run is refused unless --overwrite (or "
            "Output/Overwrite = true)\n"
            "is given; then the earlier run's files are removed first.\n"
-           "SIGINT or SIGTERM stops the run after the current step (exit "
-           "code 130 or 143), writing a checkpoint first.\n";
+           "SIGINT, SIGTERM or SIGUSR1 stops the run after the current step "
+           "(exit code 130,\n143 or 138), writing a checkpoint first; under "
+           "mpirun send SIGUSR1 (doc/user_guide.md).\n";
   }
 
   CommandLine

@@ -82,6 +82,10 @@ namespace levelsinter
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+    // Open MPI's mpirun passes SIGUSR1 on to every rank and then reports
+    // their exit code; SIGTERM or SIGINT it answers by exiting 1 and
+    // killing the ranks a second later (doc/user_guide.md, "Exit codes").
+    sigaction(SIGUSR1, &action, nullptr);
   }
 
   template <int dim>
@@ -312,12 +316,24 @@ namespace levelsinter
     state.deserialize();
     h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
 
-    std::ifstream in(checkpoint_folder + "/counters.txt");
+    const std::string counters = checkpoint_folder + "/counters.txt";
+    std::ifstream     in(counters);
     if (!in)
-      throw std::runtime_error("cannot read '" + checkpoint_folder +
-                               "/counters.txt'");
-    boost::archive::text_iarchive archive(in);
-    archive_counters(archive, first_step, first_time);
+      throw std::runtime_error("cannot read '" + counters + "'");
+    // boost names no file ("input stream error"); a checkpoint that
+    // verified holds what was written, so this is a format mismatch.
+    try
+      {
+        boost::archive::text_iarchive archive(in);
+        archive_counters(archive, first_step, first_time);
+      }
+    catch (const std::exception &e)
+      {
+        throw std::runtime_error("cannot read '" + counters + "' (" +
+                                 e.what() +
+                                 "): it is not the counters of a "
+                                 "levelsinter checkpoint of this version");
+      }
     initialised = true;
   }
 

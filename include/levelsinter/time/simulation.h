@@ -28,9 +28,10 @@
 namespace levelsinter
 {
   /**
-   * From this call on, SIGINT and SIGTERM make a running Simulation stop
-   * after its current step, as if that were the last (its metrics row and
-   * fields are written, and a checkpoint), instead of killing the process; the signal is in
+   * From this call on, SIGINT, SIGTERM and SIGUSR1 make a running
+   * Simulation stop after its current step, as if that were the last (its
+   * metrics row and fields are written, and a checkpoint), instead of
+   * killing the process; the signal is in
    * Summary::stop_signal. The handler only records the signal; a second
    * one more than two seconds later acts as usual (kills at once), an
    * earlier one is taken as the same request. For a program's main.
@@ -62,7 +63,7 @@ namespace levelsinter
       /** Last time the curvature was under-resolved (-1: never; only for
        *  curvature-driven mechanisms). */
       double curvature_under_resolved_until = -1;
-      /** SIGINT or SIGTERM if one stopped the run early (stop_on_signals()),
+      /** The signal that stopped the run early (stop_on_signals()),
        *  else 0. */
       int stop_signal = 0;
     };
@@ -77,7 +78,7 @@ namespace levelsinter
 
     /**
      * Instead of initialise(): read the mesh, the level set, the mechanisms'
-     * state and the counters from a checkpoint folder (checkpoint::newest()),
+     * state and the counters from a checkpoint folder (checkpoint::newest_verified()),
      * written with any number of ranks; run() then continues from its step,
      * keeping the first rows of metrics.csv and the field series up to it.
      */
