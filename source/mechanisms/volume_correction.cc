@@ -2,6 +2,10 @@
 #include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/mechanisms/volume_correction.h>
 
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
 namespace levelsinter
 {
   template <int dim>
@@ -64,6 +68,25 @@ namespace levelsinter
       return value;
     });
     return true;
+  }
+
+  template <int dim>
+  std::string
+  VolumeCorrection<dim>::save() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << initial_volume;
+    return out.str();
+  }
+
+  template <int dim>
+  void
+  VolumeCorrection<dim>::load(const std::string &state)
+  {
+    std::istringstream in(state);
+    if (!(in >> initial_volume))
+      throw std::runtime_error("the volume correction's checkpoint state '" +
+                               state + "' is not a number");
   }
 
   template <int dim>

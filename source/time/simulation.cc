@@ -202,19 +202,26 @@ namespace levelsinter
     archive &metrics_rows &field_output;
     if (Archive::is_loading::value)
       kept_metrics_rows = metrics_rows;
-    // The postprocessors' state (pore tracking, reference volume and
-    // centres, ...) by name.
+    // The mechanisms' and postprocessors' own numbers (reference volumes,
+    // pore tracking, centres, ...) by name.
     std::map<std::string, std::string> states;
+    for (const auto &mechanism : mechanisms)
+      states["mechanism/" + mechanism->name()] = mechanism->save();
     for (const auto &postprocessor : postprocessors)
-      states[postprocessor->name()] = postprocessor->save();
+      states["postprocessor/" + postprocessor->name()] = postprocessor->save();
     archive &states;
+    const auto load = [&states](const std::string &key, auto &object) {
+      const auto state = states.find(key);
+      if (state != states.end() && !state->second.empty())
+        object.load(state->second);
+    };
     if (Archive::is_loading::value)
-      for (const auto &postprocessor : postprocessors)
-        {
-          const auto state = states.find(postprocessor->name());
-          if (state != states.end() && !state->second.empty())
-            postprocessor->load(state->second);
-        }
+      {
+        for (const auto &mechanism : mechanisms)
+          load("mechanism/" + mechanism->name(), *mechanism);
+        for (const auto &postprocessor : postprocessors)
+          load("postprocessor/" + postprocessor->name(), *postprocessor);
+      }
   }
 
   template <int dim>

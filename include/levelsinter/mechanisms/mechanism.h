@@ -56,6 +56,22 @@ namespace levelsinter
     {}
 
     /**
+     * Numbers a restart needs besides the fields of add_state() (e.g. a
+     * reference volume), as text for the checkpoint; empty: none. The
+     * state of the last accepted step.
+     */
+    virtual std::string
+    save() const
+    {
+      return {};
+    }
+
+    /** Read back what save() wrote (a restart). */
+    virtual void
+    load(const std::string &)
+    {}
+
+    /**
      * Add the mechanism's fields (on any DoFHandler of the triangulation,
      * each add_data_vector() naming its DoFHandler) to the field output.
      * Names start with the mechanism's, so that they stay apart when

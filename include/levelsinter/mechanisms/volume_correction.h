@@ -54,6 +54,13 @@ namespace levelsinter
                             const double              dt,
                             VelocityField<dim>       &velocity) override;
 
+    /** The volume to keep. */
+    std::string
+    save() const override;
+
+    void
+    load(const std::string &state) override;
+
     std::vector<std::string>
     metric_names() const override;
 
