@@ -3,13 +3,12 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/io/checkpoint.h>
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
 
@@ -167,7 +166,7 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
     initialised = true;
   }
 
@@ -305,7 +304,7 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->add_state(alpha, state);
     state.deserialize();
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
 
     std::ifstream in(checkpoint_folder + "/counters.txt");
     if (!in)
@@ -357,7 +356,7 @@ namespace levelsinter
       state.interpolate();
     }
     // Curvature refinement makes the finest cells come and go with the necks.
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
   }
 
   template <int dim>
@@ -765,9 +764,9 @@ namespace levelsinter
           }
         catch (const std::exception &failure)
           {
-            // Stop with a diagnosis and the last accepted state saved
-            // (DESIGN.md Sect. 5), from which the run can go on with
-            // other settings.
+            // Stop with a diagnosis and the last accepted state saved, from
+            // which the run can go on with other settings (doc/user_guide.md,
+            // "Checkpoint and restart").
             write_checkpoint(step, t);
             throw std::runtime_error(
               std::string(failure.what()) + "; the last accepted state (step " +
