@@ -37,8 +37,9 @@ namespace levelsinter
   /**
    * The discrete filtered level set alpha_h: Q1 on the distributed mesh,
    * with hanging-node constraints and a ghosted copy for reading across
-   * process boundaries. Owns nothing but the field; the solvers and
-   * measurements act on it.
+   * process boundaries. Owns the field, the sparsity pattern its scalar
+   * systems share and the measured volume and area of its current alpha;
+   * the solvers and measurements act on it.
    */
   template <int dim>
   class LevelSetField
