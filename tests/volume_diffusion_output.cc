@@ -4,7 +4,8 @@
 //   volume_diffusion_output SCENE.prm [--set "Section/Entry=value"]...
 //
 // runs SCENE (two grains by volume diffusion alone), then checks that
-//   - the last fields_NNNNN.pvtu lists volume_diffusion_velocity;
+//   - the last fields_NNNNN.pvtu lists volume_diffusion_velocity, and
+//     volume_diffusion_displacement as one vector (no pressure block);
 //   - its values, read back from the patches of the same DataOut fields,
 //     equal the velocity the level set was carried with (volume diffusion
 //     is the only mechanism; the volume correction is a field of its own),
@@ -102,6 +103,15 @@ main(int argc, char **argv)
                       last + " lists volume_diffusion_velocity",
                       text.str().find("\"volume_diffusion_velocity\"") !=
                         std::string::npos);
+          // The displacement u^{n-1} as one vector field, without the
+          // unused pressure block of its velocity-pressure vector.
+          ok &= check(
+            root,
+            last + " lists volume_diffusion_displacement as a vector only",
+            text.str().find("Name=\"volume_diffusion_displacement\" "
+                            "NumberOfComponents=\"3\"") !=
+                std::string::npos &&
+              text.str().find("displacement_unused") == std::string::npos);
         }
 
       NamedDataOut data_out;

@@ -1,6 +1,5 @@
-#include <deal.II/grid/grid_tools.h>
-
 #include <levelsinter/analysis/neck.h>
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <algorithm>
@@ -295,9 +294,7 @@ namespace levelsinter::neck_measures
     // finest cell (a packing's nearly tangent contacts, which the mesh
     // joins); a pair the level set does not join measures 0.
     const double h_min =
-      GridTools::minimal_cell_diameter(
-        level_set.dof_handler().get_triangulation()) /
-      std::sqrt(double(dim));
+      finest_cell_size(level_set.dof_handler().get_triangulation());
     for (unsigned int i = 0; i < particles.size(); ++i)
       for (unsigned int j = i + 1; j < particles.size(); ++j)
         {

@@ -1,10 +1,9 @@
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/reference_shapes.h>
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <cmath>
@@ -208,10 +207,7 @@ namespace levelsinter
     // the 154-particle packing), not pores the mesh resolves; they are
     // counted apart and neither tracked nor logged.
     const double cell_volume = std::pow(
-      GridTools::minimal_cell_diameter(
-        level_set.dof_handler().get_triangulation()) /
-        std::sqrt(double(dim)),
-      dim);
+      finest_cell_size(level_set.dof_handler().get_triangulation()), dim);
     last_pores.clear();
     unsigned int n_pockets = 0;
     for (const auto &pore : find_pores(level_set, symmetry_boundaries, window))

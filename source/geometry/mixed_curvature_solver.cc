@@ -16,6 +16,7 @@
 #include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/mixed_curvature_solver.h>
 #include <levelsinter/geometry/nodal_normals.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 
 #include <algorithm>
 #include <array>
@@ -160,9 +161,8 @@ namespace levelsinter
     const auto    &dofs  = level_set.dof_handler();
     const MPI_Comm comm  = dofs.get_communicator();
     const auto    &owned = level_set.locally_owned();
-    const DynamicSparsityPattern dsp = level_set.sparsity_pattern();
     for (auto *m : {&kk, &kv, &vk, &vv, &tangential_shift, &isotropic_shift})
-      m->reinit(owned, owned, dsp, comm);
+      m->reinit(level_set.sparsity_pattern());
     rhs.reinit(owned, comm);
     kappa.reinit(owned, level_set.locally_relevant(), comm);
     velocity.reinit(owned, level_set.locally_relevant(), comm);
@@ -432,12 +432,9 @@ namespace levelsinter
         k(i) = full_solution(i);
         v(i) = scale * full_solution(i + n);
       }
-    k.compress(VectorOperation::insert);
-    v.compress(VectorOperation::insert);
-    level_set.constraints().distribute(k);
-    level_set.constraints().distribute(v);
-    kappa    = k;
-    velocity = v;
+    const auto &relevant = level_set.locally_relevant();
+    kappa    = ghosted_from_owned(k, level_set.constraints(), relevant);
+    velocity = ghosted_from_owned(v, level_set.constraints(), relevant);
     return 1;
   }
 
@@ -465,13 +462,11 @@ namespace levelsinter
       iterations += control.last_step();
     };
     mass_solve(kk, k, rhs);
-    constraints.distribute(k);
+    kappa = ghosted_from_owned(k, constraints, level_set.locally_relevant());
     vk.vmult(vrhs, k);
     vrhs *= -1;
     mass_solve(vv, v, vrhs);
-    constraints.distribute(v);
-    kappa    = k;
-    velocity = v;
+    velocity = ghosted_from_owned(v, constraints, level_set.locally_relevant());
     return iterations;
   }
 

@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <levelsinter/geometry/nodal_normals.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 
 #include <cmath>
 
@@ -108,14 +109,9 @@ namespace levelsinter
       }
     std::array<Vector, dim> normals;
     for (unsigned int c = 0; c < dim; ++c)
-      {
-        owned_normals[c].compress(VectorOperation::insert);
-        level_set.constraints().distribute(owned_normals[c]);
-        normals[c].reinit(level_set.locally_owned(),
-                          level_set.locally_relevant(),
-                          comm);
-        normals[c] = owned_normals[c];
-      }
+      normals[c] = ghosted_from_owned(owned_normals[c],
+                                      level_set.constraints(),
+                                      level_set.locally_relevant());
     return normals;
   }
 

@@ -3,8 +3,6 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -12,6 +10,8 @@
 #include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/geometry/normal_gradient_extension.h>
+#include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/same_cell.h>
 
 #include <algorithm>
@@ -50,10 +50,7 @@ namespace levelsinter
   void
   NormalGradientExtension<dim>::setup(const LevelSetField<dim> &level_set)
   {
-    matrix.reinit(level_set.locally_owned(),
-                  level_set.locally_owned(),
-                  level_set.sparsity_pattern(),
-                  level_set.dof_handler().get_communicator());
+    matrix.reinit(level_set.sparsity_pattern());
     xi.reinit(level_set.locally_owned(),
               level_set.locally_relevant(),
               level_set.dof_handler().get_communicator());
@@ -96,11 +93,7 @@ namespace levelsinter
     // up to h_K closer to the interface: clean if d < -((lambda - 1) h_min +
     // h_K), lambda h on a uniform mesh. Counting all of lambda in h_K left
     // no source next to coarser cells inside the band.
-    const double h_min =
-      Utilities::MPI::min(GridTools::minimal_cell_diameter(
-                            dofs.get_triangulation()) /
-                            std::sqrt(double(dim)),
-                          comm);
+    const double h_min = finest_cell_size(dofs.get_triangulation());
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -108,7 +101,7 @@ namespace levelsinter
           field_values[pressure].get_function_gradients(field, gradients);
           cell->get_dof_indices(indices);
           const double lambda = (settings.interior_offset - 1) * h_min +
-                                cell->diameter() / std::sqrt(double(dim));
+                                cell_size(cell);
           // Q1: local DoF v sits at vertex v, the v-th support point.
           for (unsigned int v = 0; v < indices.size(); ++v)
             {
@@ -276,7 +269,7 @@ namespace levelsinter
           fe_values.reinit(cell);
           for (unsigned int c = 0; c < dim; ++c)
             fe_values.get_function_values(normals[c], normal_values[c]);
-          const double h = cell->diameter() / std::sqrt(double(dim));
+          const double h = cell_size(cell);
           cell_matrix    = 0;
           for (unsigned int q = 0; q < nq; ++q)
             {
@@ -358,9 +351,7 @@ namespace levelsinter
         level_set, field_dofs, component, field, is_source, values, gradient);
       if (settings.linear_extrapolation)
         compute_slopes(level_set, gradient, is_source, values, slopes);
-      n_sources = static_cast<types::global_dof_index>(
-        std::round(is_source.l1_norm()));
-      if (n_sources == 0)
+      if (is_source.l1_norm() == 0)
         throw std::runtime_error(
           "volume diffusion: no level-set node lies deeper than lambda = " +
           std::to_string(settings.interior_offset) +
@@ -417,9 +408,9 @@ namespace levelsinter
                       (solutions[0](i) + filter.distance(level_set.alpha()(i)) *
                                            solutions[1](i)) /
                         solutions[2](i);
-    owned_xi.compress(VectorOperation::insert);
-    level_set.constraints().distribute(owned_xi);
-    xi = owned_xi;
+    xi = ghosted_from_owned(owned_xi,
+                            level_set.constraints(),
+                            level_set.locally_relevant());
 
     Vector reach(owned, level_set.locally_relevant(), comm);
     reach = solutions[2];

@@ -1,8 +1,6 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/hp/fe_collection.h>
 
 #include <deal.II/non_matching/fe_values.h>
@@ -11,6 +9,8 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <levelsinter/geometry/redistanced_level_set.h>
+#include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 
 #include <algorithm>
 #include <cmath>
@@ -143,9 +143,7 @@ namespace levelsinter
     const auto    &owned = level_set.locally_owned();
     const MPI_Comm comm  = dofs.get_communicator();
     const auto    &alpha = level_set.alpha();
-    const double   h_min =
-      GridTools::minimal_cell_diameter(dofs.get_triangulation()) /
-      std::sqrt(double(dim));
+    const double   h_min = finest_cell_size(dofs.get_triangulation());
     // A level set within a quarter cell of the distance is left alone.
     const double tolerance = 0.25 * h_min;
 
@@ -182,11 +180,9 @@ namespace levelsinter
                           filter.filter(measured) :
                           alpha(i);
           }
-    result.compress(VectorOperation::insert);
-    level_set.constraints().distribute(result);
-    Vector ghosted(owned, level_set.locally_relevant(), comm);
-    ghosted = result;
-    return ghosted;
+    return ghosted_from_owned(result,
+                              level_set.constraints(),
+                              level_set.locally_relevant());
   }
 
   template TrilinosWrappers::MPI::Vector

@@ -8,6 +8,7 @@
 
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/grid/interface_band_refinement.h>
+#include <levelsinter/level_set/cell_size.h>
 
 #include <algorithm>
 #include <optional>
@@ -101,7 +102,7 @@ namespace levelsinter
           cell->get_dof_indices(indices);
           if (!crossed(indices, level_set))
             continue;
-          const double h = cell->diameter() / std::sqrt(double(dim));
+          const double h = cell_size(cell);
           const double kh = curvature(cell) * h;
           result.max_curvature_times_h =
             std::max(result.max_curvature_times_h, kh);
@@ -153,7 +154,7 @@ namespace levelsinter
                        settings.band_width / std::pow(2., max_extra + 1))
                 ++max_extra;
               const unsigned int extra = level - settings.max_level;
-              const double       h = cell->diameter() / std::sqrt(double(dim));
+              const double       h = cell_size(cell);
               const double       resolution =
                 settings.cells_per_curvature_radius * (*curvature)(cell) * h;
               refine  = extra < max_extra && resolution > 1;

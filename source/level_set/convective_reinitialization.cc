@@ -1,16 +1,11 @@
 #include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_tools.h>
-
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/convective_reinitialization.h>
 
@@ -37,13 +32,8 @@ namespace levelsinter
   ConvectiveReinitialization<dim>::setup_system(
     const LevelSetField<dim> &level_set)
   {
-    const auto &dofs = level_set.dof_handler();
-    matrix.reinit(level_set.locally_owned(),
-                  level_set.locally_owned(),
-                  level_set.sparsity_pattern(),
-                  dofs.get_communicator());
-    h_min = GridTools::minimal_cell_diameter(dofs.get_triangulation()) /
-            std::sqrt(double(dim));
+    matrix.reinit(level_set.sparsity_pattern());
+    h_min = finest_cell_size(level_set.dof_handler().get_triangulation());
   }
 
   template <int dim>
@@ -117,10 +107,9 @@ namespace levelsinter
           fe_values.get_function_gradients(level_set.alpha(), grad_alpha);
           velocity_values[velocities].get_function_values(velocity.values(), v);
 
-          // Edge length of the (square) cell.
-          const double h = cell->diameter() / std::sqrt(double(dim));
-          cell_matrix         = 0;
-          cell_rhs            = 0;
+          const double h = cell_size(cell);
+          cell_matrix    = 0;
+          cell_rhs       = 0;
           for (unsigned int q = 0; q < n_q; ++q)
             {
               const double a    = alpha[q];
@@ -278,7 +267,6 @@ namespace levelsinter
     const double s = filter.saturation();
     for (const auto i : level_set.locally_owned())
       solution[i] = std::clamp(double(solution[i]), -s, s);
-    solution.compress(VectorOperation::insert);
     level_set.set_from_owned(solution);
     return control.last_step();
   }

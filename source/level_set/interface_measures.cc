@@ -16,7 +16,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <utility>
 #include <cmath>
 #include <limits>
@@ -125,11 +124,8 @@ namespace levelsinter::interface_measures
   VolumeAndArea
   volume_and_area(const LevelSetField<dim> &level_set)
   {
-    // The time loop, the metrics and several mechanisms ask for the same
-    // state; in 3D one cut-cell integration costs seconds.
-    static std::pair<std::uint64_t, VolumeAndArea> last = {0, {}};
-    if (level_set.state_id() != 0 && level_set.state_id() == last.first)
-      return last.second;
+    if (const auto &measured = level_set.measured_volume_and_area())
+      return *measured;
     VolumeAndArea       result;
     const SceneMeasure &measure = level_set.measure();
     integrate_cut<dim>(
@@ -147,7 +143,7 @@ namespace levelsinter::interface_measures
     const MPI_Comm comm = level_set.dof_handler().get_communicator();
     result.solid_volume   = Utilities::MPI::sum(result.solid_volume, comm);
     result.interface_area = Utilities::MPI::sum(result.interface_area, comm);
-    last = {level_set.state_id(), result};
+    level_set.keep_volume_and_area(result);
     return result;
   }
 

@@ -1,9 +1,11 @@
 #include <deal.II/dofs/dof_tools.h>
 
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/state_transfer.h>
 
@@ -35,7 +37,9 @@ namespace levelsinter
     ghosted_alpha.reinit(owned_dofs,
                          relevant_dofs,
                          dofs.get_communicator());
-    state = 0;
+    pattern.reset();
+    volume_and_area.reset();
+    may_keep_measurements = false;
   }
 
   template <int dim>
@@ -48,35 +52,49 @@ namespace levelsinter
   }
 
   template <int dim>
-  DynamicSparsityPattern
+  const TrilinosWrappers::SparsityPattern &
   LevelSetField<dim>::sparsity_pattern() const
   {
-    DynamicSparsityPattern dsp(relevant_dofs);
-    DoFTools::make_sparsity_pattern(dofs, dsp, hanging_node_constraints, false);
-    SparsityTools::distribute_sparsity_pattern(dsp,
-                                               owned_dofs,
-                                               dofs.get_communicator(),
-                                               relevant_dofs);
-    return dsp;
+    if (!pattern)
+      {
+        DynamicSparsityPattern dsp(relevant_dofs);
+        DoFTools::make_sparsity_pattern(dofs,
+                                        dsp,
+                                        hanging_node_constraints,
+                                        false);
+        SparsityTools::distribute_sparsity_pattern(dsp,
+                                                   owned_dofs,
+                                                   dofs.get_communicator(),
+                                                   relevant_dofs);
+        pattern = std::make_unique<TrilinosWrappers::SparsityPattern>();
+        pattern->reinit(owned_dofs, owned_dofs, dsp, dofs.get_communicator());
+      }
+    return *pattern;
   }
 
   template <int dim>
   void
   LevelSetField<dim>::set_from_owned(Vector &owned)
   {
-    hanging_node_constraints.distribute(owned);
-    ghosted_alpha = owned;
-    // Every rank sets alpha in the same order, so the ids agree.
-    static std::uint64_t last_state = 0;
-    state                           = ++last_state;
+    ghosted_alpha =
+      ghosted_from_owned(owned, hanging_node_constraints, relevant_dofs);
+    volume_and_area.reset();
+    may_keep_measurements = true;
+  }
+
+  template <int dim>
+  void
+  LevelSetField<dim>::keep_volume_and_area(
+    const interface_measures::VolumeAndArea &measured) const
+  {
+    if (may_keep_measurements)
+      volume_and_area = measured;
   }
 
   template <int dim>
   void
   LevelSetField<dim>::add_to(StateTransfer<dim> &transfer)
   {
-    // setup_dofs() sets the state id to 0 (not cached) until the next
-    // set_from_owned().
     transfer.add(dofs, {&ghosted_alpha});
   }
 

@@ -7,6 +7,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/point_value.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/velocity_field.h>
@@ -61,8 +62,8 @@ namespace levelsinter
     Vector owned(owned_dofs, dofs.get_communicator());
     owned = ghosted_velocity;
     owned += increment;
-    hanging_node_constraints.distribute(owned);
-    ghosted_velocity = owned;
+    ghosted_velocity =
+      ghosted_from_owned(owned, hanging_node_constraints, relevant_dofs);
   }
 
   template <int dim>

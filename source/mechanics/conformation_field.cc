@@ -10,6 +10,7 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/mechanics/conformation_field.h>
 
@@ -66,7 +67,7 @@ namespace levelsinter
           velocity.values(), v);
         velocity_values[FEValuesExtractors::Vector(0)]
           .get_function_gradients(velocity.values(), grad_v);
-        const double h = cell->diameter() / std::sqrt(double(dim));
+        const double h = cell_size(cell);
         for (unsigned int q = 0; q < quadrature.size(); ++q)
           tau[q] =
             1. / std::sqrt(4. / (dt * dt) + 4. * v[q].norm_square() / (h * h));

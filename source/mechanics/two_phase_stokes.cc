@@ -6,8 +6,6 @@
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/hp/fe_collection.h>
 
 #include <deal.II/lac/block_sparsity_pattern.h>
@@ -22,6 +20,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
@@ -251,8 +250,7 @@ namespace levelsinter
       {
         const SmoothedHeaviside heaviside(
           settings.interface_half_width_cells *
-          GridTools::minimal_cell_diameter(dofs.get_triangulation()) /
-          std::sqrt(double(dim)));
+          finest_cell_size(dofs.get_triangulation()));
         const MPI_Comm                comm = dofs.get_communicator();
         TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
         for (const auto i : alpha.locally_owned())
@@ -367,7 +365,7 @@ namespace levelsinter
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const double h = cell->diameter() / std::sqrt(double(dim));
+          const double h = cell_size(cell);
           // The smoothing follows the cell where it is refined beyond the
           // band: a jump narrower than the cell would be sampled, not
           // integrated, by the 3-point Gauss rule (measured with E tied to

@@ -30,12 +30,7 @@ namespace levelsinter
         Tensor<1, 3> r;
         for (unsigned int d = 0; d < dim; ++d)
           r[d] = p[d] - centre[d];
-        // In 2D the axis is z, whatever the parameter says.
-        const Tensor<1, 3> w =
-          dim == 2 ? Tensor<1, 3>({0, 0, omega_vector.norm() *
-                                           (omega_vector[2] < 0 ? -1. : 1.)}) :
-                     omega_vector;
-        const Tensor<1, 3> u = cross_product_3d(w, r);
+        const Tensor<1, 3> u = cross_product_3d(omega_vector, r);
         for (unsigned int d = 0; d < dim; ++d)
           v[d] = u[d];
       }
@@ -68,8 +63,8 @@ namespace levelsinter
   std::unique_ptr<Function<dim>>
   make_prescribed_velocity(const SceneParameters::Velocity &parameters)
   {
-    if (parameters.type == PrescribedVelocityParameters::Type::none)
-      return std::make_unique<Functions::ZeroFunction<dim>>(dim);
+    Assert(parameters.type != PrescribedVelocityParameters::Type::none,
+           ExcMessage("a scene without a velocity builds no PrescribedVelocity"));
     if (parameters.type == PrescribedVelocityParameters::Type::constant)
       {
         std::vector<double> v(parameters.constant.begin(),
@@ -81,6 +76,7 @@ namespace levelsinter
         Tensor<1, 3> axis;
         for (unsigned int d = 0; d < 3; ++d)
           axis[d] = parameters.rotation_axis[d];
+        // In 2D the axis is z, whatever the parameter says.
         if (dim == 2)
           axis = Tensor<1, 3>({0, 0, 1});
         return std::make_unique<RigidRotation<dim>>(

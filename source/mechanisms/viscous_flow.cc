@@ -3,11 +3,11 @@
 
 #include <deal.II/fe/fe_values.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/geometry/redistanced_level_set.h>
+#include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/interface_measures.h>
 #include <levelsinter/level_set/point_value.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
@@ -53,7 +53,7 @@ namespace levelsinter
   ViscousFlow<dim>::setup(const LevelSetField<dim> &alpha)
   {
     const auto &tria = alpha.dof_handler().get_triangulation();
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
     const auto settings =
       TwoPhaseStokes<dim>::Settings::from(parameters,
                                           symmetry_planes,
@@ -102,10 +102,8 @@ namespace levelsinter
   {
     const MPI_Comm                comm = alpha.dof_handler().get_communicator();
     // H_h reaches ceil(E / h) cell layers from the cut cells, and the
-    // normals of its outermost nodes one layer more. Measured on the
-    // coalescing spheres (final radius at R/h = 10 / 20): +0.44 / -0.49 %
-    // with ceil(E / h) layers, +0.45 / -0.24 % with one more, +0.43 /
-    // -0.23 % with two more.
+    // normals of its outermost nodes one layer more (doc/numerics.md, "The
+    // level set the form reads").
     interface_level_set = redistanced_level_set(
       alpha,
       filter,
@@ -113,7 +111,10 @@ namespace levelsinter
         1);
     TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
     if (exact_curvature)
-      VectorTools::interpolate(alpha.dof_handler(), *exact_curvature, owned);
+      {
+        VectorTools::interpolate(alpha.dof_handler(), *exact_curvature, owned);
+        kappa = owned;
+      }
     else
       {
         // kappa_h = L2 projection of div N_alpha (Eq. 80 at dt = 0, nodal
@@ -135,10 +136,10 @@ namespace levelsinter
             const double d = filter.distance(interface_level_set(i));
             owned(i) = k / std::max(1 - d * k / principal_curvatures, 0.5);
           }
-        owned.compress(VectorOperation::insert);
-        alpha.constraints().distribute(owned);
+        kappa = ghosted_from_owned(owned,
+                                   alpha.constraints(),
+                                   alpha.locally_relevant());
       }
-    kappa = owned;
   }
 
   template <int dim>
@@ -221,12 +222,11 @@ namespace levelsinter
   ViscousFlow<dim>::stretch_weight(const LevelSetField<dim> &alpha) const
   {
     // The atmosphere carries c only so that it can be transported. Its fast
-    // flow would stretch c with no stress to resist it (on the axisymmetric
-    // spheres at De = 1, tr c reached 7 400 1.4-2 cells out in the
-    // atmosphere, against 126 in the melt), and the transition zone weighs
-    // that c with H_s > 0. So the stretch is full where alpha <= 0 and
-    // fades to none at 2E, E the Stokes interface half-width of the band's
-    // cells: H_s(alpha - E).
+    // flow would stretch c with no stress to resist it, and the transition
+    // zone weighs that c with H_s > 0. So the stretch is full where
+    // alpha <= 0 and fades to none at 2E, E the Stokes interface half-width
+    // of the band's cells: H_s(alpha - E) (doc/numerics.md, "The atmosphere
+    // carries no polymer").
     const auto  &tria   = alpha.dof_handler().get_triangulation();
     const int    finer  = int(tria.n_global_levels()) - 1 - int(band_level);
     const double h_band = h_min * (1u << std::max(0, finer));
@@ -236,13 +236,9 @@ namespace levelsinter
     for (const auto i : alpha.locally_owned())
       owned(i) = heaviside.solid_fraction(alpha.alpha()(i) -
                                           heaviside.half_width());
-    owned.compress(VectorOperation::insert);
-    alpha.constraints().distribute(owned);
-    TrilinosWrappers::MPI::Vector weight(alpha.locally_owned(),
-                                         alpha.locally_relevant(),
-                                         comm);
-    weight = owned;
-    return weight;
+    return ghosted_from_owned(owned,
+                              alpha.constraints(),
+                              alpha.locally_relevant());
   }
 
   template <int dim>
@@ -278,13 +274,10 @@ namespace levelsinter
           owned[d + 1](i) = std::sqrt(lambda[d]);
       }
     for (unsigned int k = 0; k < owned.size(); ++k)
-      {
-        owned[k].compress(VectorOperation::insert);
-        alpha.constraints().distribute(owned[k]);
-        auto &field = k == 0 ? trace_c : stretches[k - 1];
-        field.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
-        field = owned[k];
-      }
+      (k == 0 ? trace_c : stretches[k - 1]) =
+        ghosted_from_owned(owned[k],
+                           alpha.constraints(),
+                           alpha.locally_relevant());
     max_trace_c = Utilities::MPI::max(largest, comm);
   }
 
@@ -413,14 +406,12 @@ namespace levelsinter
   {
     if (measures_at_step_start.interface_area == 0)
       return;
-    // 0.1 %: measured in the Hopper case at R/h = 10, the stable
-    // (semi-implicit, dt = 5 eta h / gamma) steps lower the measure by 6.8 %
-    // early to 0.23 % late and never raise it; the first unstable explicit
-    // step at that dt raised it by 0.9 % (doc/validation.md). A step that
-    // also gained volume (the volume correction moves the interface
-    // outwards) may grow the measure legitimately: it is rejected only if
-    // the scale-free measure S / V^((dim-1)/dim), which a uniform normal
-    // offset of a sphere leaves unchanged, grew as well.
+    // 0.1 %: stable steps never raise the measure, an unstable one raises
+    // it by about 1 % (doc/numerics.md, "Step rejection by surface
+    // energy"). A step that also gained volume (the volume correction moves
+    // the interface outwards) may grow the measure legitimately: it is
+    // rejected only if the scale-free measure S / V^((dim-1)/dim), which a
+    // uniform normal offset of a sphere leaves unchanged, grew as well.
     const auto   start    = measures_at_step_start;
     const auto   end      = interface_measures::volume_and_area(alpha);
     const double body_dim = alpha.measure().template body_dimension<dim>();
@@ -458,13 +449,11 @@ namespace levelsinter
     if (relaxation_time == 0)
       return a * zero_shear_viscosity;
     // A viscoelastic melt resists a step dt with the viscosity of its
-    // implicit polymer stress, eta_s + eta_p dt / (lambda + dt) (doc/
-    // numerics.md), not eta_0: the largest dt <= a (eta_s + eta_p dt /
-    // (lambda + dt)) is the positive root of dt^2 + b dt - a eta_s lambda
-    // with b = lambda - a eta_0 (eta_0 as lambda -> 0, a eta_s for
-    // lambda >> a eta_0). With eta_0 instead, the stiff melt of
-    // doc/validation.md (De = 10, beta = 0.001) took steps 4-10 times this
-    // limit near its elastic equilibrium: 116 rejected in its first 179.
+    // implicit polymer stress, eta_s + eta_p dt / (lambda + dt), not eta_0
+    // (doc/numerics.md, "Capillary time-step limit"): the largest
+    // dt <= a (eta_s + eta_p dt / (lambda + dt)) is the positive root of
+    // dt^2 + b dt - a eta_s lambda with b = lambda - a eta_0 (eta_0 as
+    // lambda -> 0, a eta_s for lambda >> a eta_0).
     const double eta_s = parameters.solid_viscosity;
     const double b     = relaxation_time - a * zero_shear_viscosity;
     const double c     = 4 * a * eta_s * relaxation_time;

@@ -2,8 +2,7 @@
 
 #include <deal.II/dofs/dof_tools.h>
 
-#include <deal.II/grid/grid_tools.h>
-
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/mechanisms/volume_diffusion.h>
 
 #include <iostream>
@@ -18,6 +17,27 @@ namespace levelsinter
     // explicit stability limit"): c = 152, 141, 130 at h = 1/64, 1/128,
     // 1/256 (the first unstable steps 176, 163, 150); the least.
     constexpr double measured_limit = 130;
+
+    // The first dim components of a velocity-pressure vector as one vector
+    // field.
+    template <int dim>
+    class VelocityBlock : public DataPostprocessorVector<dim>
+    {
+    public:
+      explicit VelocityBlock(const std::string &name)
+        : DataPostprocessorVector<dim>(name, update_values)
+      {}
+
+      void
+      evaluate_vector_field(
+        const DataPostprocessorInputs::Vector<dim> &inputs,
+        std::vector<dealii::Vector<double>>        &computed) const override
+      {
+        for (unsigned int q = 0; q < computed.size(); ++q)
+          for (unsigned int d = 0; d < dim; ++d)
+            computed[q](d) = inputs.solution_values[q](d);
+      }
+    };
 
     template <int dim>
     typename NormalGradientExtension<dim>::Settings
@@ -35,7 +55,7 @@ namespace levelsinter
 
     // @p block (ghosted, numbered as @p dofs: TwoPhaseStokes::setup_dofs()
     // numbers the velocity block first) as one ghosted plain vector on
-    // @p dofs, the form StateTransfer and NormalGradientExtension read.
+    // @p dofs, the form NormalGradientExtension reads.
     template <int dim>
     TrilinosWrappers::MPI::Vector
     as_plain_vector(const TrilinosWrappers::MPI::BlockVector &block,
@@ -103,9 +123,7 @@ namespace levelsinter
         alpha.dof_handler().get_triangulation(), settings, *phases);
     operator_->setup_dofs();
     extension.setup(alpha);
-    h_min = GridTools::minimal_cell_diameter(
-              alpha.dof_handler().get_triangulation()) /
-            std::sqrt(double(dim));
+    h_min = finest_cell_size(alpha.dof_handler().get_triangulation());
   }
 
   template <int dim>
@@ -217,13 +235,12 @@ namespace levelsinter
                              operator_->solution(),
                              names,
                              interpretation);
-    // u^{n-1}: its pressure block is unused (zero).
-    std::vector<std::string> u_names(dim, "volume_diffusion_displacement");
-    u_names.emplace_back("volume_diffusion_displacement_unused");
+    // u^{n-1}.
+    output_displacement =
+      std::make_unique<VelocityBlock<dim>>("volume_diffusion_displacement");
     data_out.add_data_vector(operator_->dof_handler(),
                              operator_->displacement(),
-                             u_names,
-                             interpretation);
+                             *output_displacement);
     data_out.add_data_vector(alpha.dof_handler(),
                              extension.normal_gradient(),
                              "volume_diffusion_xi");

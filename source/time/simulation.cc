@@ -3,12 +3,11 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/base/utilities.h>
 
-#include <deal.II/grid/grid_tools.h>
-
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/analysis/scene_postprocessors.h>
 #include <levelsinter/grid/box_mesh.h>
 #include <levelsinter/io/checkpoint.h>
+#include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/time/simulation.h>
 
@@ -181,7 +180,7 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->setup(alpha);
     transport.setup_system(alpha);
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
     initialised = true;
   }
 
@@ -321,7 +320,7 @@ namespace levelsinter
     for (auto &mechanism : mechanisms)
       mechanism->add_state(alpha, state);
     state.deserialize();
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
 
     const std::string counters = checkpoint_folder + "/counters.txt";
     std::ifstream     in(counters);
@@ -385,7 +384,7 @@ namespace levelsinter
       state.interpolate();
     }
     // Curvature refinement makes the finest cells come and go with the necks.
-    h_min = GridTools::minimal_cell_diameter(tria) / std::sqrt(double(dim));
+    h_min = finest_cell_size(tria);
   }
 
   template <int dim>
@@ -721,9 +720,9 @@ namespace levelsinter
           }
         catch (const std::exception &failure)
           {
-            // Stop with a diagnosis and the last accepted state saved
-            // (DESIGN.md Sect. 5), from which the run can go on with
-            // other settings.
+            // Stop with a diagnosis and the last accepted state saved, from
+            // which the run can go on with other settings (doc/user_guide.md,
+            // "Checkpoint and restart").
             write_checkpoint(step, t);
             throw std::runtime_error(
               std::string(failure.what()) + "; the last accepted state (step " +

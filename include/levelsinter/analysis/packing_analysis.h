@@ -39,12 +39,6 @@ namespace levelsinter
             const double              t,
             const LevelSetField<dim> &level_set);
 
-    const BoundingBox<dim> &
-    control_volume() const
-    {
-      return window;
-    }
-
     /** The pores and the pair necks of the last measure(). */
     const std::vector<Pore<dim>> &
     pores() const

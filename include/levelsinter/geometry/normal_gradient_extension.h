@@ -130,13 +130,6 @@ namespace levelsinter
       return unsourced_cells;
     }
 
-    /** Source nodes (d < -lambda) in the last solve (all ranks). */
-    types::global_dof_index
-    source_nodes() const
-    {
-      return n_sources;
-    }
-
   private:
     // Marks the source nodes, their nodal grad p in @p gradient and
     // g = grad p . N in @p values; the other nodes get 0.
@@ -170,6 +163,5 @@ namespace levelsinter
     std::array<Vector, dim>           normals;
     Vector                            xi;
     unsigned int                      unsourced_cells = 0;
-    types::global_dof_index           n_sources       = 0;
   };
 } // namespace levelsinter

@@ -55,12 +55,11 @@ namespace levelsinter
     integrate_regions(const LevelSetField<dim>     &level_set,
                       const RegionIntegrands<dim> &integrands);
 
-    struct VolumeAndArea
-    {
-      double solid_volume   = 0; // area in 2D
-      double interface_area = 0; // length in 2D
-    };
-
+    /**
+     * The solid's volume and the interface's area (VolumeAndArea, declared
+     * with LevelSetField). Measured once per state of alpha: the field
+     * keeps the result until alpha changes (measured_volume_and_area()).
+     */
     template <int dim>
     VolumeAndArea
     volume_and_area(const LevelSetField<dim> &level_set);

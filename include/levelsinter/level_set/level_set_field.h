@@ -9,12 +9,13 @@
 #include <deal.II/fe/fe_q.h>
 
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <levelsinter/level_set/scene_measure.h>
 
-#include <cstdint>
+#include <memory>
+#include <optional>
 
 namespace levelsinter
 {
@@ -23,11 +24,22 @@ namespace levelsinter
   template <int dim>
   class StateTransfer;
 
+  namespace interface_measures
+  {
+    /** What interface_measures::volume_and_area() measures. */
+    struct VolumeAndArea
+    {
+      double solid_volume   = 0; // area in 2D
+      double interface_area = 0; // length in 2D
+    };
+  } // namespace interface_measures
+
   /**
    * The discrete filtered level set alpha_h: Q1 on the distributed mesh,
    * with hanging-node constraints and a ghosted copy for reading across
-   * process boundaries. Owns nothing but the field; the solvers and
-   * measurements act on it.
+   * process boundaries. Owns the field, the sparsity pattern its scalar
+   * systems share and the measured volume and area of its current alpha;
+   * the solvers and measurements act on it.
    */
   template <int dim>
   class LevelSetField
@@ -60,12 +72,17 @@ namespace levelsinter
     /**
      * The sparsity pattern of a matrix on these DoFs with these
      * constraints, distributed over the ranks: what every scalar system on
-     * the level-set mesh (transport, curvature) is sized with.
+     * the level-set mesh (transport, curvature, the xi extension) is sized
+     * with. Built at the first call after setup_dofs() and shared by those
+     * systems until the next setup_dofs() (a mesh change).
      */
-    DynamicSparsityPattern
+    const TrilinosWrappers::SparsityPattern &
     sparsity_pattern() const;
 
-    /** Set the ghosted vector from an owned-only one, applying constraints. */
+    /**
+     * Set alpha from @p owned (locally owned entries set; compressed and
+     * constrained here).
+     */
     void
     set_from_owned(Vector &owned);
 
@@ -114,15 +131,21 @@ namespace levelsinter
     }
 
     /**
-     * A number that identifies the current values of alpha among all
-     * states of all level-set fields of the run: a measurement of one
-     * state (interface_measures::volume_and_area) is taken once and reused.
+     * The volume and area interface_measures::volume_and_area() measured
+     * on the current alpha, if it did: the time loop, the metrics and
+     * several mechanisms ask for the same state, and in 3D one cut-cell
+     * integration costs seconds. Dropped whenever alpha changes.
      */
-    std::uint64_t
-    state_id() const
+    const std::optional<interface_measures::VolumeAndArea> &
+    measured_volume_and_area() const
     {
-      return state;
+      return volume_and_area;
     }
+
+    /** Keep @p measured as measured_volume_and_area() of the current alpha. */
+    void
+    keep_volume_and_area(
+      const interface_measures::VolumeAndArea &measured) const;
 
   private:
     SceneMeasure              scene_measure;
@@ -132,6 +155,11 @@ namespace levelsinter
     IndexSet                  owned_dofs;
     IndexSet                  relevant_dofs;
     Vector                    ghosted_alpha;
-    std::uint64_t             state = 0;
+    // Both belong to the current DoFs; the pattern also to the constraints.
+    mutable std::unique_ptr<TrilinosWrappers::SparsityPattern> pattern;
+    // Kept only for an alpha set through set_from_owned(): after
+    // setup_dofs() a StateTransfer writes alpha without telling this class.
+    mutable std::optional<interface_measures::VolumeAndArea> volume_and_area;
+    bool may_keep_measurements = false;
   };
 } // namespace levelsinter

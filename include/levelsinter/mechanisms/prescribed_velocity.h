@@ -10,9 +10,9 @@
 namespace levelsinter
 {
   /**
-   * The velocity a transport scene prescribes (Velocity section): none,
-   * constant, rigid rotation, or a parsed expression of x and t. Returned as
-   * a dim-component Function whose time the caller sets.
+   * The velocity a transport scene prescribes (Velocity section, not
+   * `none`): constant, rigid rotation, or a parsed expression of x and t.
+   * Returned as a dim-component Function whose time the caller sets.
    */
   template <int dim>
   std::unique_ptr<Function<dim>>

@@ -4,6 +4,8 @@
 
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <deal.II/numerics/data_postprocessor.h>
+
 #include <levelsinter/geometry/normal_gradient_extension.h>
 #include <levelsinter/level_set/level_set_filter.h>
 #include <levelsinter/mechanics/phase_law.h>
@@ -151,5 +153,8 @@ namespace levelsinter
     // The velocity of the last step for the field output, which keeps a
     // reference to it until the patches are built.
     mutable std::unique_ptr<VelocityField<dim>> output_velocity;
+    // Likewise the displacement's velocity block (its pressure block is
+    // unused).
+    mutable std::unique_ptr<DataPostprocessor<dim>> output_displacement;
   };
 } // namespace levelsinter

@@ -12,8 +12,9 @@ namespace levelsinter
 
   /**
    * Hopper's exact coalescence of two equal viscous cylinders of radius R
-   * (DESIGN.md Sect. 4 item 4), centred at the origin with the line of
-   * centres along x: the boundary is z = A zeta / (1 - m zeta^2), |zeta| = 1,
+   * (doc/validation.md, "Hopper's two cylinders"), centred at the origin
+   * with the line of centres along x: the boundary is
+   * z = A zeta / (1 - m zeta^2), |zeta| = 1,
    * with A = sqrt2 R (1 - m^2) / sqrt(1 + m^2); the neck half-width is
    * y_n = sqrt2 R (1 - m) / sqrt(1 + m^2) and the dimensionless time
    * t gamma / (eta R) = (pi / sqrt2) int_m^1 dk / (k sqrt(1 + k^2) K(k)).
