@@ -122,8 +122,8 @@ def history(level, directory, csv_name, times):
         "closed_pore_size": column(rows, "closed_pore_volume"),
         "open_porosity": column(rows, "open_porosity"),
         "volume_change": column(rows, "volume_change"),
-        "max_trace_c": column(rows, "max_trace_c"),
-        "neck_trace_c": column(rows, "neck_trace_c"),
+        "max_trace_c": column(rows, "viscoelastic_max_trace_c"),
+        "neck_trace_c": column(rows, "neck_viscoelastic_trace_c"),
     }
     with open(f"{csv_name}.level{level}.csv", "w", newline="") as f:
         writer = csv.writer(f)

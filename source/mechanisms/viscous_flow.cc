@@ -1,7 +1,4 @@
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
-
-#include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_tools.h>
 
@@ -9,8 +6,6 @@
 
 #include <levelsinter/geometry/redistanced_level_set.h>
 #include <levelsinter/level_set/interface_measures.h>
-#include <levelsinter/level_set/point_value.h>
-#include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
@@ -33,19 +28,20 @@ namespace levelsinter
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
-    , phases(make_phase_law<dim>(law, parameters))
+    , viscoelastic(law.is_viscoelastic() ?
+                     std::make_unique<ViscoelasticState<dim>>(
+                       law, filter, parameters.interface_half_width, band_level) :
+                     nullptr)
+    , phases(make_phase_law<dim>(law, parameters, viscoelastic.get()))
     , zero_shear_viscosity(parameters.solid_viscosity +
                            (law.is_viscoelastic() ? law.polymer_viscosity : 0))
     , relaxation_time(law.is_viscoelastic() ? law.relaxation_time : 0)
   {
-    if (phases->has_history())
+    if (law.law == PhaseLawParameters::Law::elastic_solid)
       throw std::runtime_error(
         "entry 'Phase law/Law': viscous flow moves the particles with "
         "their Newtonian velocity and needs 'newtonian' (the elastic solid "
         "belongs to volume diffusion)");
-    if (phases->has_polymer_stress())
-      conformation_model =
-        std::make_unique<ConformationModel>(conformation_parameters(law));
   }
 
   template <int dim>
@@ -64,17 +60,8 @@ namespace levelsinter
     // builds after the mechanisms: create the operator on first use.
     operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
     operator_->setup_dofs();
-    if (conformation_model)
-      {
-        // On the level set's DoFs, which outlive the mesh changes; the
-        // state comes back through add_state().
-        if (!conformation)
-          conformation = std::make_unique<ConformationField<dim>>(
-            alpha.dof_handler(), *conformation_model, alpha.measure());
-        conformation->setup();
-        operator_->set_conformation(*conformation);
-        conformation_pending = false;
-      }
+    if (viscoelastic)
+      viscoelastic->setup(alpha);
 
     if (settings.form == Form::csf_curvature)
       {
@@ -103,10 +90,8 @@ namespace levelsinter
   {
     const MPI_Comm                comm = alpha.dof_handler().get_communicator();
     // H_h reaches ceil(E / h) cell layers from the cut cells, and the
-    // normals of its outermost nodes one layer more. Measured on the
-    // coalescing spheres (final radius at R/h = 10 / 20): +0.44 / -0.49 %
-    // with ceil(E / h) layers, +0.45 / -0.24 % with one more, +0.43 /
-    // -0.23 % with two more.
+    // normals of its outermost nodes one layer more (doc/numerics.md,
+    // "Surface-tension forms").
     interface_level_set = redistanced_level_set(
       alpha,
       filter,
@@ -190,93 +175,19 @@ namespace levelsinter
 
     // The melt's conformation follows the velocity just solved for (the
     // scene's velocity so far: this and any prescribed one).
-    if (conformation && dt > 0)
+    if (viscoelastic && dt > 0)
       {
         TimerOutput::Scope scope(timer, "viscous flow: conformation");
-        const TrilinosWrappers::MPI::Vector weight = stretch_weight(alpha);
-        conformation_iterations = conformation->advance(velocity, dt, &weight);
-        conformation_pending    = true;
+        viscoelastic->advance(alpha, velocity, dt);
       }
-  }
-
-  template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ViscousFlow<dim>::stretch_weight(const LevelSetField<dim> &alpha) const
-  {
-    // The atmosphere carries c only so that it can be transported. Its fast
-    // flow would stretch c with no stress to resist it (on the axisymmetric
-    // spheres at De = 1, tr c reached 7 400 1.4-2 cells out in the
-    // atmosphere, against 126 in the melt), and the transition zone weighs
-    // that c with H_s > 0. So the stretch is full where alpha <= 0 and
-    // fades to none at 2E, E the Stokes interface half-width of the band's
-    // cells: H_s(alpha - E).
-    const auto  &tria   = alpha.dof_handler().get_triangulation();
-    const int    finer  = int(tria.n_global_levels()) - 1 - int(band_level);
-    const double h_band = h_min * (1u << std::max(0, finer));
-    const SmoothedHeaviside heaviside(parameters.interface_half_width * h_band);
-    const MPI_Comm          comm = alpha.dof_handler().get_communicator();
-    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
-    for (const auto i : alpha.locally_owned())
-      owned(i) = heaviside.solid_fraction(alpha.alpha()(i) -
-                                          heaviside.half_width());
-    owned.compress(VectorOperation::insert);
-    alpha.constraints().distribute(owned);
-    TrilinosWrappers::MPI::Vector weight(alpha.locally_owned(),
-                                         alpha.locally_relevant(),
-                                         comm);
-    weight = owned;
-    return weight;
-  }
-
-  template <int dim>
-  void
-  ViscousFlow<dim>::commit_conformation(const LevelSetField<dim> &alpha)
-  {
-    conformation->commit();
-    const double saturation = 0.999 * filter.saturation();
-    conformation->fade([&](const types::global_dof_index i) {
-      return alpha.alpha()(i) < saturation ? 1. : 0.;
-    });
-    conformation_pending = false;
-
-    const MPI_Comm comm = alpha.dof_handler().get_communicator();
-    // tr c and the principal stretches at the nodes, for the metrics and
-    // the output.
-    std::array<TrilinosWrappers::MPI::Vector, 4> owned;
-    for (auto &v : owned)
-      v.reinit(alpha.locally_owned(), comm);
-    const auto         &s = conformation->log_conformation();
-    std::vector<double> values(s.size());
-    double              largest = 0;
-    for (const auto i : alpha.locally_owned())
-      {
-        for (unsigned int k = 0; k < s.size(); ++k)
-          values[k] = s[k](i);
-        const SymmetricTensor<2, 3> c =
-          ConformationField<dim>::conformation(values);
-        owned[0](i) = trace(c);
-        largest     = std::max(largest, double(owned[0](i)));
-        const std::array<double, 3> lambda = eigenvalues(c);
-        for (unsigned int d = 0; d < 3; ++d)
-          owned[d + 1](i) = std::sqrt(lambda[d]);
-      }
-    for (unsigned int k = 0; k < owned.size(); ++k)
-      {
-        owned[k].compress(VectorOperation::insert);
-        alpha.constraints().distribute(owned[k]);
-        auto &field = k == 0 ? trace_c : stretches[k - 1];
-        field.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
-        field = owned[k];
-      }
-    max_trace_c = Utilities::MPI::max(largest, comm);
   }
 
   template <int dim>
   void
   ViscousFlow<dim>::accept_step(const LevelSetField<dim> &alpha)
   {
-    if (conformation && conformation_pending)
-      commit_conformation(alpha);
+    if (viscoelastic)
+      viscoelastic->accept(alpha);
   }
 
   template <int dim>
@@ -286,8 +197,8 @@ namespace levelsinter
   {
     // The committed state: the time loop accepted the last step
     // (accept_step()), or it stops after a failed one.
-    if (conformation)
-      conformation->add_state(transfer);
+    if (viscoelastic)
+      viscoelastic->add_state(transfer);
   }
 
   template <int dim>
@@ -295,11 +206,9 @@ namespace levelsinter
   ViscousFlow<dim>::metric_names() const
   {
     std::vector<std::string> names = {"stokes_iterations", "stokes_solve_cpu"};
-    if (conformation_model)
-      {
-        names.emplace_back("conformation_iterations");
-        names.emplace_back("max_trace_c");
-      }
+    if (viscoelastic)
+      for (const auto &name : viscoelastic->metric_names())
+        names.push_back(name);
     return names;
   }
 
@@ -308,11 +217,9 @@ namespace levelsinter
   ViscousFlow<dim>::metric_values() const
   {
     std::vector<double> values = {double(last_iterations), last_solve_cpu};
-    if (conformation_model)
-      {
-        values.push_back(conformation_iterations);
-        values.push_back(max_trace_c);
-      }
+    if (viscoelastic)
+      for (const double value : viscoelastic->metric_values())
+        values.push_back(value);
     return values;
   }
 
@@ -320,8 +227,8 @@ namespace levelsinter
   std::vector<std::string>
   ViscousFlow<dim>::point_metric_names() const
   {
-    if (conformation_model)
-      return {"trace_c"};
+    if (viscoelastic)
+      return viscoelastic->point_metric_names();
     return {};
   }
 
@@ -330,24 +237,9 @@ namespace levelsinter
   ViscousFlow<dim>::point_metric_values(const LevelSetField<dim> &alpha,
                                         const Point<dim>         &point) const
   {
-    if (!conformation_model)
-      return {};
-    // Before the first step c = I.
-    if (trace_c.size() != alpha.dof_handler().n_dofs())
-      return {3.};
-    return {value_at_point<double>(
-      alpha.dof_handler(),
-      point,
-      "tr c",
-      [&](const auto &cell, const Point<dim> &unit) {
-        FEValues<dim> values(alpha.dof_handler().get_fe(),
-                             Quadrature<dim>(unit),
-                             update_values);
-        values.reinit(cell);
-        std::vector<double> v(1);
-        values.get_function_values(trace_c, v);
-        return v[0];
-      })};
+    if (viscoelastic)
+      return viscoelastic->point_metric_values(alpha, point);
+    return {};
   }
 
   template <int dim>
@@ -369,17 +261,8 @@ namespace levelsinter
       data_out.add_data_vector(alpha.dof_handler(),
                                kappa,
                                "viscous_flow_curvature");
-    if (trace_c.size() == alpha.dof_handler().n_dofs())
-      {
-        data_out.add_data_vector(alpha.dof_handler(),
-                                 trace_c,
-                                 "viscoelastic_trace_c");
-        for (unsigned int d = 0; d < 3; ++d)
-          data_out.add_data_vector(alpha.dof_handler(),
-                                   stretches[d],
-                                   "viscoelastic_stretch_" +
-                                     std::to_string(d + 1));
-      }
+    if (viscoelastic)
+      viscoelastic->add_output_fields(alpha, data_out);
   }
 
   template <int dim>
@@ -388,14 +271,10 @@ namespace levelsinter
   {
     if (measures_at_step_start.interface_area == 0)
       return;
-    // 0.1 %: measured in the Hopper case at R/h = 10, the stable
-    // (semi-implicit, dt = 5 eta h / gamma) steps lower the measure by 6.8 %
-    // early to 0.23 % late and never raise it; the first unstable explicit
-    // step at that dt raised it by 0.9 % (doc/validation.md). A step that
-    // also gained volume (the volume correction moves the interface
-    // outwards) may grow the measure legitimately: it is rejected only if
-    // the scale-free measure S / V^((dim-1)/dim), which a uniform normal
-    // offset of a sphere leaves unchanged, grew as well.
+    // 0.1 % lies between what stable steps do (lower the measure) and the
+    // first unstable step's growth; a step that gained volume is judged
+    // by the scale-free S / V^((dim-1)/dim) as well (doc/numerics.md,
+    // "Step rejection by surface energy").
     const auto   start    = measures_at_step_start;
     const auto   end      = interface_measures::volume_and_area(alpha);
     const double body_dim = alpha.measure().template body_dimension<dim>();
@@ -433,13 +312,10 @@ namespace levelsinter
     if (relaxation_time == 0)
       return a * zero_shear_viscosity;
     // A viscoelastic melt resists a step dt with the viscosity of its
-    // implicit polymer stress, eta_s + eta_p dt / (lambda + dt) (doc/
-    // numerics.md), not eta_0: the largest dt <= a (eta_s + eta_p dt /
-    // (lambda + dt)) is the positive root of dt^2 + b dt - a eta_s lambda
-    // with b = lambda - a eta_0 (eta_0 as lambda -> 0, a eta_s for
-    // lambda >> a eta_0). With eta_0 instead, the stiff melt of
-    // doc/validation.md (De = 10, beta = 0.001) took steps 4-10 times this
-    // limit near its elastic equilibrium: 116 rejected in its first 179.
+    // implicit polymer stress, eta_s + eta_p dt / (lambda + dt), not eta_0
+    // (doc/numerics.md, "Viscoelastic melts"): the largest dt <= a (eta_s
+    // + eta_p dt / (lambda + dt)) is the positive root of dt^2 + b dt - a
+    // eta_s lambda with b = lambda - a eta_0.
     const double eta_s = parameters.solid_viscosity;
     const double b     = relaxation_time - a * zero_shear_viscosity;
     const double c     = 4 * a * eta_s * relaxation_time;
