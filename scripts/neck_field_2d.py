@@ -3,10 +3,11 @@
 the line x = X (a symmetry plane through the neck), the first crossing of
 the interface above y = Y0 (a point inside the neck), and the field one
 finest cell H inside the solid from there, interpolated linearly between
-the nodes on the line. The application measures this (neck_trace_c) for
-a pair of equal particles only; this reads it for any neck that a
-symmetry plane cuts, e.g. the ring's (doc/validation.md, "Viscoelastic
-melts past topology change and in a 3D packing").
+the nodes on the line. The application measures this
+(neck_viscoelastic_trace_c) for a pair of equal particles only; this
+reads it for any neck that a symmetry plane cuts, e.g. the ring's
+(doc/validation.md, "Viscoelastic melts past topology change and in a
+3D packing").
 
 usage: neck_field_2d.py RUN_DIR --csv OUT.csv --y0 Y0 --h H [--x X]
                         [--field NAME]

@@ -124,8 +124,8 @@ def history(level, directory, csv_name, times):
         "closed_pore_size": column(rows, "closed_pore_volume"),
         "open_porosity": column(rows, "open_porosity"),
         "volume_change": column(rows, "volume_change"),
-        "max_trace_c": column(rows, "max_trace_c"),
-        "neck_trace_c": column(rows, "neck_trace_c"),
+        "max_trace_c": column(rows, "viscoelastic_max_trace_c"),
+        "neck_trace_c": column(rows, "neck_viscoelastic_trace_c"),
     }
     validation_data.refuse_shorter(f"{csv_name}.level{level}.csv", len(t))
     with open(f"{csv_name}.level{level}.csv", "w", newline="") as f:

@@ -92,7 +92,8 @@ function(add_newtonian_limit_check suffix scene)
     COMMAND compare_metrics ve_newtonian_${suffix}/metrics.csv
       ve_limit_${suffix}/metrics.csv 1e-3
       wall_time stokes_solve_cpu stokes_iterations transport_iterations
-      max_velocity conformation_iterations max_trace_c neck_trace_c)
+      max_velocity viscoelastic_iterations viscoelastic_max_trace_c
+      neck_viscoelastic_trace_c)
   set_tests_properties(viscoelastic_newtonian_limit_agrees_${suffix}
     PROPERTIES FIXTURES_REQUIRED "ve_newtonian_${suffix};ve_limit_${suffix}")
 endfunction()
@@ -290,7 +291,7 @@ add_newtonian_limit_check(axisymmetric
 # near-zero volume change and correction speed (values of 1e-6, equal to
 # 1e-4 relative) agrees to 5.0e-8 (measured); limit 1e-6.
 ranks_agree(viscoelastic_spheres_axisymmetric ve_spheres ${VE_SPHERES} 1e-6
-  "stokes_iterations;transport_iterations;conformation_iterations;volume_change;volume_correction_speed"
+  "stokes_iterations;transport_iterations;viscoelastic_iterations;volume_change;volume_correction_speed"
   --set "Time/End time=0.02" --set "Mesh refinement/Maximum level=5"
   --set "Mesh refinement/Band width=0.48"
   --set "Level set/Filter thickness=0.64" --set "Output/Metrics interval=1")

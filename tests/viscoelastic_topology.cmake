@@ -93,7 +93,7 @@ endforeach()
 add_test(NAME viscoelastic_topology_ring_1_vs_2_ranks COMMAND compare_metrics
   ve_topology_viscoelastic_topology_ring_np1/metrics.csv
   ve_topology_viscoelastic_topology_ring_np2/metrics.csv 1e-6
-  wall_time stokes_solve_cpu stokes_iterations conformation_iterations
+  wall_time stokes_solve_cpu stokes_iterations viscoelastic_iterations
   transport_iterations volume_change open_porosity)
 set_tests_properties(viscoelastic_topology_ring_1_vs_2_ranks PROPERTIES
   FIXTURES_REQUIRED "viscoelastic_topology_ring_np1;viscoelastic_topology_ring_np2")

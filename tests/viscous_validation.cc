@@ -14,6 +14,8 @@
 // csf-curvature, csf-curvature-exact).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C, --max-curvature-error,
+// --max-outer-pressure-error (bubble: |p_out - p_ext| / p_exact, p_ext the
+// scene's 'External pressure'),
 // --max-neck-error, --max-area-drift, --max-mean-stokes-its,
 // --max-stokes-its, hopper: --circle-start 1 (keep the scene's circles
 // instead of Hopper's shape of their neck), --max-neck-error-from-tau0.2,
@@ -253,7 +255,8 @@ namespace
                  "p_in", "p_out", "pressure_error", "core_error", "C",
                  "kappa_rms_error", "kappa_max_error"},
                 options.csv);
-    double worst_error = 0, worst_C = 0, worst_core = 0, worst_kappa = 0;
+    double worst_error = 0, worst_C = 0, worst_core = 0, worst_kappa = 0,
+           worst_outer = 0;
     for (const auto &form : forms)
       for (const unsigned int level : levels)
         {
@@ -309,6 +312,9 @@ namespace
           const double eta   = scene.viscous_flow.solid_viscosity;
           const double p_exact = gamma * kappa_exact;
           const double error   = std::abs(p[0] - p[1] - p_exact) / p_exact;
+          // The traction -p_ext n on the free box faces sets the level.
+          const double outer_error =
+            std::abs(p[1] - scene.viscous_flow.external_pressure) / p_exact;
           const double C       = velocity.max_norm() * eta / gamma;
           Point<dim>   centre;
           for (unsigned int d = 0; d < dim; ++d)
@@ -331,6 +337,7 @@ namespace
               worst_C     = std::max(worst_C, C);
               worst_core  = std::max(worst_core, core_error);
               worst_kappa = std::max(worst_kappa, kappa_error[1]);
+              worst_outer = std::max(worst_outer, outer_error);
             }
         }
     if (root)
@@ -349,6 +356,8 @@ namespace
           "max-core-error");
     check("finest max relative curvature error on the interface",
           worst_kappa, options, "max-curvature-error");
+    check("finest |p_out - p_ext| / p_exact (worst form)", worst_outer,
+          options, "max-outer-pressure-error");
   }
 
   // What the two-particle studies read from one run.
@@ -993,11 +1002,13 @@ namespace
         const auto &t          = m.column("time");
         const auto &neck       = m.column("neck_radius");
         const auto &curvature  = m.column("neck_curvature");
-        const bool  melt       = m.has_column("neck_trace_c");
+        const bool  melt       = m.has_column("neck_viscoelastic_trace_c");
         const std::vector<double> none(t.size(),
                                        std::numeric_limits<double>::quiet_NaN());
-        const auto &neck_trace = melt ? m.column("neck_trace_c") : none;
-        const auto &max_trace  = melt ? m.column("max_trace_c") : none;
+        const auto &neck_trace =
+          melt ? m.column("neck_viscoelastic_trace_c") : none;
+        const auto &max_trace =
+          melt ? m.column("viscoelastic_max_trace_c") : none;
         auto        series     = open_series(
           options,
           level,

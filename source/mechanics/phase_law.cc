@@ -20,6 +20,20 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  ElasticSolidFluid<dim>::material_states(
+    const MaterialInputs<dim>       &inputs,
+    std::vector<MaterialState<dim>> &states) const
+  {
+    std::vector<SymmetricTensor<2, dim>> strain(
+      inputs.values.n_quadrature_points);
+    inputs.values[FEValuesExtractors::Vector(0)]
+      .get_function_symmetric_gradients(inputs.displacement, strain);
+    for (unsigned int k = 0; k < strain.size(); ++k)
+      states[k].old_strain = strain[k];
+  }
+
+  template <int dim>
   HistoryTerms<dim>
   ElasticSolidFluid<dim>::history(const PhaseFractions     &f,
                                   const MaterialState<dim> &state) const
@@ -45,6 +59,22 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  ViscoelasticPhases<dim>::material_states(
+    const MaterialInputs<dim>       &inputs,
+    std::vector<MaterialState<dim>> &states) const
+  {
+    std::vector<SymmetricTensor<2, dim>> stress;
+    std::vector<double>                  hoop_stress;
+    polymer.stress_values(inputs.level_set_values, stress, hoop_stress);
+    for (unsigned int k = 0; k < stress.size(); ++k)
+      {
+        states[k].polymer_stress      = stress[k];
+        states[k].polymer_hoop_stress = hoop_stress[k];
+      }
+  }
+
+  template <int dim>
   HistoryTerms<dim>
   ViscoelasticPhases<dim>::history(const PhaseFractions     &f,
                                    const MaterialState<dim> &state) const
@@ -56,25 +86,11 @@ namespace levelsinter
     return terms;
   }
 
-  ConformationModel::Parameters
-  conformation_parameters(const PhaseLawParameters &law)
-  {
-    ConformationModel::Parameters p;
-    p.law = law.law == PhaseLawParameters::Law::xpp ?
-              ConformationModel::Law::xpp :
-              ConformationModel::Law::giesekus;
-    p.relaxation_time         = law.relaxation_time;
-    p.modulus                 = law.polymer_viscosity / law.relaxation_time;
-    p.mobility                = law.giesekus_mobility;
-    p.stretch_relaxation_time = law.xpp_stretch_relaxation_time;
-    p.arms                    = law.xpp_arms;
-    return p;
-  }
-
   template <int dim>
   std::unique_ptr<PhaseLaw<dim>>
-  make_phase_law(const PhaseLawParameters    &law,
-                 const ViscousFlowParameters &flow)
+  make_phase_law(const PhaseLawParameters     &law,
+                 const ViscousFlowParameters  &flow,
+                 const ViscoelasticState<dim> *polymer)
   {
     if (law.law == PhaseLawParameters::Law::elastic_solid)
       return std::make_unique<ElasticSolidFluid<dim>>(law.shear_modulus,
@@ -82,12 +98,19 @@ namespace levelsinter
                                                       flow.fluid_viscosity,
                                                       flow.fluid_compressibility);
     if (law.is_viscoelastic())
-      return std::make_unique<ViscoelasticPhases<dim>>(
-        flow.solid_viscosity,
-        law.polymer_viscosity,
-        law.relaxation_time,
-        flow.fluid_viscosity,
-        flow.fluid_compressibility);
+      {
+        if (polymer == nullptr)
+          throw std::logic_error(
+            "make_phase_law: a viscoelastic law needs the melt's "
+            "ViscoelasticState");
+        return std::make_unique<ViscoelasticPhases<dim>>(
+          flow.solid_viscosity,
+          law.polymer_viscosity,
+          law.relaxation_time,
+          flow.fluid_viscosity,
+          flow.fluid_compressibility,
+          *polymer);
+      }
     return std::make_unique<NewtonianPhases<dim>>(flow.solid_viscosity,
                                                   flow.fluid_viscosity,
                                                   flow.fluid_compressibility);
@@ -98,7 +121,11 @@ namespace levelsinter
   template class ViscoelasticPhases<2>;
   template class ViscoelasticPhases<3>;
   template std::unique_ptr<PhaseLaw<2>>
-  make_phase_law(const PhaseLawParameters &, const ViscousFlowParameters &);
+  make_phase_law(const PhaseLawParameters &,
+                 const ViscousFlowParameters &,
+                 const ViscoelasticState<2> *);
   template std::unique_ptr<PhaseLaw<3>>
-  make_phase_law(const PhaseLawParameters &, const ViscousFlowParameters &);
+  make_phase_law(const PhaseLawParameters &,
+                 const ViscousFlowParameters &,
+                 const ViscoelasticState<3> *);
 } // namespace levelsinter

@@ -1,54 +1,7 @@
 #include <levelsinter/mechanics/stokes_assemblers.h>
-#include <levelsinter/mechanics/stokes_cell_data.h>
-
-#include <algorithm>
 
 namespace levelsinter
 {
-  template <int dim>
-  StokesCellData<dim>::StokesCellData(const std::vector<unsigned int> &component)
-    : component(component)
-    , n_dofs(component.size())
-  {
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
-  }
-
-  template <int dim>
-  void
-  StokesCellData<dim>::reinit(const FEValues<dim>  &values,
-                              const SceneMeasure   &measure)
-  {
-    n_q = values.n_quadrature_points;
-    // Grown, never shrunk: the rule alternates between 2 and 3 points per
-    // direction from cell to cell.
-    if (JxW.size() < n_q)
-      {
-        JxW.resize(n_q);
-        inverse_radius.resize(n_q);
-        law.resize(n_q);
-        tau.resize(n_q);
-        history.resize(n_q);
-        balanced_force.resize(n_q);
-        value.resize(n_q, std::vector<double>(n_dofs));
-        gradient.resize(n_q, std::vector<Tensor<1, dim>>(n_dofs));
-      }
-    for (unsigned int k = 0; k < n_q; ++k)
-      {
-        JxW[k]            = measure.JxW(values, k);
-        inverse_radius[k] = measure.inverse_radius(values.quadrature_point(k));
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            value[k][i]    = values.shape_value_component(i, k, component[i]);
-            gradient[k][i] = values.shape_grad_component(i, k, component[i]);
-          }
-        history[k]        = HistoryTerms<dim>();
-        balanced_force[k] = Tensor<1, dim>();
-      }
-    surface.clear();
-    free_faces.clear();
-  }
-
   template <int dim>
   void
   BulkAssembler<dim>::assemble(const StokesCellData<dim> &data,
@@ -214,10 +167,12 @@ namespace levelsinter
 
   template <int dim>
   void
-  TractionAssembler<dim>::assemble(const StokesCellData<dim> &data,
-                                   CellContribution          &cell) const
+  TractionAssembler<dim>::assemble(
+    const StokesCellData<dim>                  &data,
+    const typename StokesCellData<dim>::Face &face,
+    CellContribution                           &cell) const
   {
-    for (const auto &point : data.free_faces)
+    for (const auto &point : face.points)
       for (unsigned int i = 0; i < data.n_dofs; ++i)
         cell.rhs(i) -= p_ext * (point.w[i] * point.normal) * point.JxW;
   }
@@ -236,7 +191,6 @@ namespace levelsinter
   }
 
 #define INSTANTIATE(dim)                                            \
-  template struct StokesCellData<dim>;                              \
   template class BulkAssembler<dim>;                                \
   template class StabilisationAssembler<dim>;                       \
   template class TensorialSurfaceTensionAssembler<dim>;             \

@@ -1,12 +1,7 @@
-#include <deal.II/base/quadrature_lib.h>
-
 #include <deal.II/dofs/dof_renumbering.h>
 #include <deal.II/dofs/dof_tools.h>
 
 #include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_values.h>
-
-#include <deal.II/hp/fe_collection.h>
 
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -15,13 +10,9 @@
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
-#include <deal.II/non_matching/fe_values.h>
-#include <deal.II/non_matching/mesh_classifier.h>
-
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/level_set/cell_size.h>
-#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
@@ -211,6 +202,36 @@ namespace levelsinter
               }
   }
 
+  namespace
+  {
+    // H_h of the balanced force: H_s of the interface level set (a
+    // distance, redistanced_level_set()) at the level-set nodes,
+    // constrained so that it lies in the continuous pressure space. A node
+    // has no cell size: E is that of the finest cells (the form is meant
+    // for uniform meshes).
+    template <int dim>
+    TrilinosWrappers::MPI::Vector
+    nodal_solid_fraction(const LevelSetField<dim>            &alpha,
+                         const TrilinosWrappers::MPI::Vector &interface_level_set,
+                         const double interface_half_width_cells)
+    {
+      const SmoothedHeaviside heaviside(
+        interface_half_width_cells *
+        finest_cell_size(alpha.dof_handler().get_triangulation()));
+      const MPI_Comm                comm = alpha.dof_handler().get_communicator();
+      TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+      for (const auto i : alpha.locally_owned())
+        owned(i) = heaviside.solid_fraction(interface_level_set(i));
+      owned.compress(VectorOperation::insert);
+      alpha.constraints().distribute(owned);
+      TrilinosWrappers::MPI::Vector solid_fraction(alpha.locally_owned(),
+                                                   alpha.locally_relevant(),
+                                                   comm);
+      solid_fraction = owned;
+      return solid_fraction;
+    }
+  } // namespace
+
   template <int dim>
   template <typename MatrixType, typename VectorType>
   void
@@ -228,9 +249,8 @@ namespace levelsinter
       schur_matrix = 0;
 
     const double gamma = settings.surface_tension;
-    const bool              curvature_form =
+    const bool   curvature_form =
       settings.form == SurfaceTensionForm::csf_curvature && gamma != 0;
-    const bool sharp = settings.form == SurfaceTensionForm::sharp && gamma != 0;
     const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
     if (curvature_form &&
         (curvature.size() != alpha.dof_handler().n_dofs() ||
@@ -238,109 +258,6 @@ namespace levelsinter
       throw std::runtime_error(
         "viscous flow: the csf-curvature surface-tension form needs a "
         "curvature and an interface level set on the level-set DoFs");
-
-    // H_h of the balanced force: H_s at the level-set nodes, with the
-    // hanging-node constraints applied so that H_h lies in the (continuous)
-    // pressure space. A node has no cell size of its own: E is taken at the
-    // finest cells (the form is meant for the bubble's uniform meshes).
-    // Read from the interface level set: alpha is no distance everywhere
-    // in the transition zone (redistanced_level_set()).
-    TrilinosWrappers::MPI::Vector solid_fraction;
-    if (curvature_form)
-      {
-        const SmoothedHeaviside heaviside(
-          settings.interface_half_width_cells *
-          finest_cell_size(dofs.get_triangulation()));
-        const MPI_Comm                comm = dofs.get_communicator();
-        TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
-        for (const auto i : alpha.locally_owned())
-          owned(i) = heaviside.solid_fraction(interface_level_set(i));
-        owned.compress(VectorOperation::insert);
-        alpha.constraints().distribute(owned);
-        solid_fraction.reinit(alpha.locally_owned(),
-                              alpha.locally_relevant(),
-                              comm);
-        solid_fraction = owned;
-      }
-
-    // Three Gauss points per direction: the smoothed coefficients and the
-    // Dirac vary across a cell of the band; for the balanced force the
-    // products grad H_h . w and H_h div w (degree 2 per direction) are
-    // integrated exactly, so the discrete integration by parts that makes
-    // f = grad(gamma kappa H_h) holds to round-off.
-    // Cells the transition zone does not reach have constant coefficients
-    // and no surface terms: there 2 points per direction integrate the Q1
-    // products exactly, at 8/27 of the cost in 3D.
-    const QGauss<dim>     quadrature(3);
-    const QGauss<dim>     uniform_quadrature(2);
-    const QGauss<dim - 1> face_quadrature(2);
-    const UpdateFlags     flags = update_values | update_gradients |
-                              update_JxW_values | update_quadrature_points;
-    const SceneMeasure   &measure = alpha.measure();
-    FEValues<dim> transition_values(finite_element, quadrature, flags);
-    FEValues<dim> uniform_values(finite_element, uniform_quadrature, flags);
-    FEValues<dim> transition_level_set_values(alpha.fe(),
-                                              quadrature,
-                                              update_values |
-                                                update_gradients);
-    FEValues<dim> uniform_level_set_values(alpha.fe(),
-                                           uniform_quadrature,
-                                           update_values | update_gradients);
-    Vector<double> vertex_alpha(alpha.fe().dofs_per_cell);
-    FEFaceValues<dim> face_values(finite_element,
-                                  face_quadrature,
-                                  update_values | update_normal_vectors |
-                                    update_JxW_values |
-                                    update_quadrature_points);
-
-    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
-    std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
-    const hp::FECollection<dim>                       fe_collection(
-      finite_element);
-    if (sharp)
-      {
-        classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
-          alpha.dof_handler(), alpha.alpha());
-        classifier->reclassify();
-        NonMatching::RegionUpdateFlags flags;
-        flags.surface = update_values | update_gradients |
-                        update_JxW_values | update_normal_vectors |
-                        update_quadrature_points;
-        // 2 points per direction: Q1 test-function gradients vary
-        // linearly in a cell, and the geometric error of the Q1 zero level
-        // set (O(h^2)) dominates the quadrature error.
-        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
-          fe_collection,
-          QGauss<1>(2),
-          flags,
-          *classifier,
-          alpha.dof_handler(),
-          alpha.alpha());
-      }
-
-    const FEValuesExtractors::Vector velocity(0);
-    const unsigned int               n = finite_element.dofs_per_cell;
-    std::vector<unsigned int>        component(n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = finite_element.system_to_component_index(i).first;
-    StokesCellData<dim>                  data(component);
-    CellContribution                     cell_contribution(n);
-    std::vector<types::global_dof_index> indices(n);
-    std::vector<double>                  alpha_q(quadrature.size());
-    std::vector<Tensor<1, dim>>          grad_alpha_q(quadrature.size());
-    std::vector<double>                  kappa_q(quadrature.size());
-    std::vector<Tensor<1, dim>>          grad_heaviside_q(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> old_strain_q(quadrature.size());
-    std::vector<SymmetricTensor<2, dim>> polymer_stress_q(quadrature.size());
-    std::vector<double>                  polymer_hoop_q(quadrature.size());
-    const bool history        = phase_law.has_history();
-    const bool polymer_stress = phase_law.has_polymer_stress();
-    if (polymer_stress &&
-        (conformation == nullptr ||
-         &conformation->dof_handler() != &alpha.dof_handler()))
-      throw std::logic_error(
-        "TwoPhaseStokes: a law with polymer stress needs a conformation "
-        "field on the level set's DoFs (set_conformation())");
 
     // The terms of the operator, chosen once for this assembly.
     std::vector<std::unique_ptr<StokesAssembler<dim>>> assemblers;
@@ -354,190 +271,70 @@ namespace levelsinter
     if (implicit_dt > 0)
       assemblers.push_back(
         std::make_unique<LaplaceBeltramiAssembler<dim>>(gamma, implicit_dt));
+    std::vector<std::unique_ptr<StokesFaceAssembler<dim>>> face_assemblers;
     if (settings.external_pressure != 0)
-      assemblers.push_back(
+      face_assemblers.push_back(
         std::make_unique<TractionAssembler<dim>>(settings.external_pressure));
-    // The surface measure is needed by the tensorial load and the
-    // Laplace-Beltrami term.
-    const bool surface_measure = (gamma != 0 && !curvature_form) ||
-                                 implicit_dt > 0;
 
+    // What the cell data gathers for them.
+    using CellData = StokesCellData<dim>;
+    const TrilinosWrappers::MPI::Vector solid_fraction =
+      curvature_form ?
+        nodal_solid_fraction(alpha,
+                             interface_level_set,
+                             settings.interface_half_width_cells) :
+        TrilinosWrappers::MPI::Vector();
+    typename CellData::Inputs inputs{alpha, phase_law, old_displacement};
+    if (curvature_form)
+      {
+        inputs.curvature      = &curvature;
+        inputs.solid_fraction = &solid_fraction;
+      }
+    inputs.surface_tension = gamma;
+    // The tensorial load and the Laplace-Beltrami term need the surface.
+    if ((gamma != 0 && !curvature_form) || implicit_dt > 0)
+      inputs.surface = settings.form == SurfaceTensionForm::sharp ?
+                         CellData::SurfaceMeasure::sharp :
+                         CellData::SurfaceMeasure::smeared;
+    inputs.interface_half_width_cells = settings.interface_half_width_cells;
+    inputs.band_level                 = settings.band_level;
+    inputs.stabilisation_constant     = settings.stabilisation_constant;
+    inputs.free_faces                 = !face_assemblers.empty();
+    inputs.symmetry_boundaries        = settings.symmetry_boundaries;
+
+    // step-32's split: the worker fills a cell's contribution from the
+    // cell data, the copier adds it to the global system.
+    const auto worker = [&](const auto       &cell,
+                            CellData         &data,
+                            CellContribution &contribution) {
+      data.reinit(cell);
+      contribution.reset();
+      for (const auto &assembler : assemblers)
+        assembler->assemble(data, contribution);
+      for (const auto &face : data.free_faces)
+        for (const auto &assembler : face_assemblers)
+          assembler->assemble(data, face, contribution);
+      symmetrise(data, contribution);
+      cell->get_dof_indices(contribution.dof_indices);
+    };
+    const auto copier = [&](const CellContribution &contribution) {
+      constraints.distribute_local_to_global(contribution.matrix,
+                                             contribution.rhs,
+                                             contribution.dof_indices,
+                                             matrix,
+                                             rhs);
+      if (!settings.direct_solver)
+        constraints.distribute_local_to_global(contribution.schur,
+                                               contribution.dof_indices,
+                                               schur_matrix);
+    };
+    CellData         data(finite_element, inputs);
+    CellContribution contribution(finite_element.dofs_per_cell);
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const double h = cell_size(cell);
-          // The smoothing follows the cell where it is refined beyond the
-          // band: a jump narrower than the cell would be sampled, not
-          // integrated, by the 3-point Gauss rule (measured with E tied to
-          // h_min under curvature refinement: the area drift grew 2.8-fold,
-          // doc/validation.md). It does not widen on cells coarser than the
-          // band: the filtered level set carries the distance only a few
-          // band cells out (the sine filter saturates at 2 E_f / pi), so a
-          // wider ramp there would mix the phases far from the interface.
-          const int    coarser = std::max(0, int(settings.band_level) -
-                                                cell->level());
-          const double E =
-            settings.interface_half_width_cells * h / (1u << coarser);
-          const SmoothedHeaviside heaviside(E);
-
-          // The phases are constant where alpha < -E (solid) or alpha > 3E
-          // (atmosphere beyond its compressible layer, Eq. 102 shifted by
-          // 2E); Q1 alpha takes its extremes at the vertices. The nodal
-          // H_h of the balanced force is not bounded this way under
-          // hanging nodes, so that form keeps the 3-point rule.
-          const auto ls_cell = same_cell(cell, alpha.dof_handler());
-          ls_cell->get_dof_values(alpha.alpha(), vertex_alpha);
-          const auto [lowest, highest] =
-            std::minmax_element(vertex_alpha.begin(), vertex_alpha.end());
-          const bool uniform =
-            !curvature_form && (*highest < -E || *lowest > 3 * E);
-          FEValues<dim> &values = uniform ? uniform_values : transition_values;
-          FEValues<dim> &level_set_values =
-            uniform ? uniform_level_set_values : transition_level_set_values;
-          const unsigned int n_q = values.get_quadrature().size();
-          values.reinit(cell);
-          level_set_values.reinit(ls_cell);
-          data.reinit(values, measure);
-          data.h = h;
-          alpha_q.resize(n_q);
-          grad_alpha_q.resize(n_q);
-          level_set_values.get_function_values(alpha.alpha(), alpha_q);
-          level_set_values.get_function_gradients(alpha.alpha(),
-                                                  grad_alpha_q);
-          if (curvature_form)
-            {
-              level_set_values.get_function_values(curvature, kappa_q);
-              level_set_values.get_function_gradients(solid_fraction,
-                                                      grad_heaviside_q);
-            }
-          if (history)
-            {
-              old_strain_q.resize(n_q);
-              values[velocity].get_function_symmetric_gradients(
-                old_displacement, old_strain_q);
-            }
-          if (polymer_stress)
-            conformation->stress_values(level_set_values,
-                                        polymer_stress_q,
-                                        polymer_hoop_q);
-          // The Schur approximation weighs the pressure mass with the
-          // cell-mean viscosity (Grinevich & Olshanskii 2009): with the
-          // pointwise 1/eta of the smeared interface the outer iterations
-          // grew with the contrast (doc/numerics.md).
-          data.a1_cell = 0;
-          for (const unsigned int k : values.quadrature_point_indices())
-            {
-              const PhaseFractions fractions{
-                heaviside.solid_fraction(alpha_q[k]),
-                1 - heaviside.solid_fraction(alpha_q[k] - 2 * E)};
-              data.law[k] = phase_law.coefficients(fractions);
-              if (history || polymer_stress)
-                {
-                  MaterialState<dim> state;
-                  if (history)
-                    state.old_strain = old_strain_q[k];
-                  if (polymer_stress)
-                    {
-                      state.polymer_stress      = polymer_stress_q[k];
-                      state.polymer_hoop_stress = polymer_hoop_q[k];
-                    }
-                  data.history[k] = phase_law.history(fractions, state);
-                }
-              data.a1_cell += data.law[k].a1 / n_q;
-              data.tau[k] = settings.stabilisation_constant * data.law[k].a2 *
-                            h * h / data.law[k].a1;
-              if (curvature_form)
-                data.balanced_force[k] =
-                  gamma * kappa_q[k] * grad_heaviside_q[k];
-            }
-
-          if (surface_measure && !sharp)
-            for (const unsigned int k : values.quadrature_point_indices())
-              {
-                // dS -> delta(alpha) |grad alpha| dV: the co-area formula
-                // makes the smeared integral the average of the sharp one
-                // over the level sets |alpha| < E.
-                const double norm = grad_alpha_q[k].norm();
-                const double weight =
-                  heaviside.dirac(alpha_q[k]) * norm * data.JxW[k];
-                if (weight > 0)
-                  {
-                    typename StokesCellData<dim>::SurfacePoint point{
-                      grad_alpha_q[k] / norm, weight, {}, {}};
-                    point.grad_w.resize(n);
-                    point.hoop.resize(n);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        point.grad_w[i] = data.velocity_gradient(k, i);
-                        point.hoop[i]   = data.hoop(k, i);
-                      }
-                    data.surface.push_back(std::move(point));
-                  }
-              }
-          if (surface_measure && sharp)
-            {
-              cut_values->reinit(cell);
-              if (const auto &surface = cut_values->get_surface_fe_values())
-                for (const unsigned int k :
-                     surface->quadrature_point_indices())
-                  {
-                    typename StokesCellData<dim>::SurfacePoint point{
-                      surface->normal_vector(k),
-                      measure.JxW(*surface, k),
-                      {},
-                      {}};
-                    const double inverse_radius =
-                      measure.inverse_radius(surface->quadrature_point(k));
-                    point.grad_w.resize(n);
-                    point.hoop.resize(n);
-                    for (unsigned int i = 0; i < n; ++i)
-                      {
-                        point.grad_w[i] = (*surface)[velocity].gradient(i, k);
-                        point.hoop[i] =
-                          (*surface)[velocity].value(i, k)[0] * inverse_radius;
-                      }
-                    data.surface.push_back(std::move(point));
-                  }
-            }
-
-          // Free faces: those not on a symmetry plane.
-          if (settings.external_pressure != 0)
-            for (const auto &face : cell->face_iterators())
-              if (face->at_boundary() &&
-                  std::find(settings.symmetry_boundaries.begin(),
-                            settings.symmetry_boundaries.end(),
-                            face->boundary_id()) ==
-                    settings.symmetry_boundaries.end())
-                {
-                  face_values.reinit(cell, face);
-                  for (const unsigned int k :
-                       face_values.quadrature_point_indices())
-                    {
-                      typename StokesCellData<dim>::FacePoint point{
-                        face_values.normal_vector(k),
-                        measure.JxW(face_values, k),
-                        {}};
-                      point.w.resize(n);
-                      for (unsigned int i = 0; i < n; ++i)
-                        point.w[i] = face_values[velocity].value(i, k);
-                      data.free_faces.push_back(std::move(point));
-                    }
-                }
-
-          cell_contribution.reset();
-          for (const auto &assembler : assemblers)
-            assembler->assemble(data, cell_contribution);
-          symmetrise(data, cell_contribution);
-          cell->get_dof_indices(indices);
-          constraints.distribute_local_to_global(cell_contribution.matrix,
-                                                 cell_contribution.rhs,
-                                                 indices,
-                                                 matrix,
-                                                 rhs);
-          if (!settings.direct_solver)
-            constraints.distribute_local_to_global(cell_contribution.schur,
-                                                   indices,
-                                                   schur_matrix);
+          worker(cell, data, contribution);
+          copier(contribution);
         }
     matrix.compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);

@@ -1,4 +1,3 @@
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <deal.II/fe/fe_values.h>
@@ -9,8 +8,6 @@
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/interface_measures.h>
-#include <levelsinter/level_set/point_value.h>
-#include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
 
 #include <cmath>
@@ -33,19 +30,20 @@ namespace levelsinter
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
-    , phases(make_phase_law<dim>(law, parameters))
+    , viscoelastic(law.is_viscoelastic() ?
+                     std::make_unique<ViscoelasticState<dim>>(
+                       law, filter, parameters.interface_half_width, band_level) :
+                     nullptr)
+    , phases(make_phase_law<dim>(law, parameters, viscoelastic.get()))
     , zero_shear_viscosity(parameters.solid_viscosity +
                            (law.is_viscoelastic() ? law.polymer_viscosity : 0))
     , relaxation_time(law.is_viscoelastic() ? law.relaxation_time : 0)
   {
-    if (phases->has_history())
+    if (law.law == PhaseLawParameters::Law::elastic_solid)
       throw std::runtime_error(
         "entry 'Phase law/Law': viscous flow moves the particles with "
         "their Newtonian velocity and needs 'newtonian' (the elastic solid "
         "belongs to volume diffusion)");
-    if (phases->has_polymer_stress())
-      conformation_model =
-        std::make_unique<ConformationModel>(conformation_parameters(law));
   }
 
   template <int dim>
@@ -63,17 +61,8 @@ namespace levelsinter
     // builds after the mechanisms: create the operator on first use.
     operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
     operator_->setup_dofs();
-    if (conformation_model)
-      {
-        // On the level set's DoFs, which outlive the mesh changes; the
-        // state comes back through add_state().
-        if (!conformation)
-          conformation = std::make_unique<ConformationField<dim>>(
-            alpha.dof_handler(), *conformation_model, alpha.measure());
-        conformation->setup();
-        operator_->set_conformation(*conformation);
-        conformation_pending = false;
-      }
+    if (viscoelastic)
+      viscoelastic->setup(alpha);
 
     if (settings.form == Form::csf_curvature)
       {
@@ -208,77 +197,11 @@ namespace levelsinter
 
     // The melt's conformation follows the velocity just solved for (the
     // scene's velocity so far: this and any prescribed one).
-    if (conformation && dt > 0)
+    if (viscoelastic && dt > 0)
       {
         TimerOutput::Scope scope(timer, "viscous flow: conformation");
-        const TrilinosWrappers::MPI::Vector weight = stretch_weight(alpha);
-        conformation_iterations = conformation->advance(velocity, dt, &weight);
-        conformation_pending    = true;
+        viscoelastic->advance(alpha, velocity, dt);
       }
-  }
-
-  template <int dim>
-  TrilinosWrappers::MPI::Vector
-  ViscousFlow<dim>::stretch_weight(const LevelSetField<dim> &alpha) const
-  {
-    // The atmosphere carries c only so that it can be transported. Its fast
-    // flow would stretch c with no stress to resist it, and the transition
-    // zone weighs that c with H_s > 0. So the stretch is full where
-    // alpha <= 0 and fades to none at 2E, E the Stokes interface half-width
-    // of the band's cells: H_s(alpha - E) (doc/numerics.md, "The atmosphere
-    // carries no polymer").
-    const auto  &tria   = alpha.dof_handler().get_triangulation();
-    const int    finer  = int(tria.n_global_levels()) - 1 - int(band_level);
-    const double h_band = h_min * (1u << std::max(0, finer));
-    const SmoothedHeaviside heaviside(parameters.interface_half_width * h_band);
-    const MPI_Comm          comm = alpha.dof_handler().get_communicator();
-    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
-    for (const auto i : alpha.locally_owned())
-      owned(i) = heaviside.solid_fraction(alpha.alpha()(i) -
-                                          heaviside.half_width());
-    return ghosted_from_owned(owned,
-                              alpha.constraints(),
-                              alpha.locally_relevant());
-  }
-
-  template <int dim>
-  void
-  ViscousFlow<dim>::commit_conformation(const LevelSetField<dim> &alpha)
-  {
-    conformation->commit();
-    const double saturation = 0.999 * filter.saturation();
-    conformation->fade([&](const types::global_dof_index i) {
-      return alpha.alpha()(i) < saturation ? 1. : 0.;
-    });
-    conformation_pending = false;
-
-    const MPI_Comm comm = alpha.dof_handler().get_communicator();
-    // tr c and the principal stretches at the nodes, for the metrics and
-    // the output.
-    std::array<TrilinosWrappers::MPI::Vector, 4> owned;
-    for (auto &v : owned)
-      v.reinit(alpha.locally_owned(), comm);
-    const auto         &s = conformation->log_conformation();
-    std::vector<double> values(s.size());
-    double              largest = 0;
-    for (const auto i : alpha.locally_owned())
-      {
-        for (unsigned int k = 0; k < s.size(); ++k)
-          values[k] = s[k](i);
-        const SymmetricTensor<2, 3> c =
-          ConformationField<dim>::conformation(values);
-        owned[0](i) = trace(c);
-        largest     = std::max(largest, double(owned[0](i)));
-        const std::array<double, 3> lambda = eigenvalues(c);
-        for (unsigned int d = 0; d < 3; ++d)
-          owned[d + 1](i) = std::sqrt(lambda[d]);
-      }
-    for (unsigned int k = 0; k < owned.size(); ++k)
-      (k == 0 ? trace_c : stretches[k - 1]) =
-        ghosted_from_owned(owned[k],
-                           alpha.constraints(),
-                           alpha.locally_relevant());
-    max_trace_c = Utilities::MPI::max(largest, comm);
   }
 
   template <int dim>
@@ -286,15 +209,16 @@ namespace levelsinter
   ViscousFlow<dim>::accept_step(const LevelSetField<dim> &alpha)
   {
     step_started = false;
-    if (conformation && conformation_pending)
-      commit_conformation(alpha);
+    if (viscoelastic)
+      viscoelastic->accept(alpha);
   }
 
   template <int dim>
   void
   ViscousFlow<dim>::reject_step()
   {
-    conformation_pending = false;
+    if (viscoelastic)
+      viscoelastic->reject();
   }
 
   template <int dim>
@@ -304,8 +228,8 @@ namespace levelsinter
   {
     // The committed state: the time loop accepted the last step
     // (accept_step()), or it stops after a failed one.
-    if (conformation)
-      conformation->add_state(transfer);
+    if (viscoelastic)
+      viscoelastic->add_state(transfer);
   }
 
   template <int dim>
@@ -313,11 +237,9 @@ namespace levelsinter
   ViscousFlow<dim>::metric_names() const
   {
     std::vector<std::string> names = {"stokes_iterations", "stokes_solve_cpu"};
-    if (conformation_model)
-      {
-        names.emplace_back("conformation_iterations");
-        names.emplace_back("max_trace_c");
-      }
+    if (viscoelastic)
+      for (const auto &name : viscoelastic->metric_names())
+        names.push_back(name);
     return names;
   }
 
@@ -326,11 +248,9 @@ namespace levelsinter
   ViscousFlow<dim>::metric_values() const
   {
     std::vector<double> values = {double(last_iterations), last_solve_cpu};
-    if (conformation_model)
-      {
-        values.push_back(conformation_iterations);
-        values.push_back(max_trace_c);
-      }
+    if (viscoelastic)
+      for (const double value : viscoelastic->metric_values())
+        values.push_back(value);
     return values;
   }
 
@@ -338,8 +258,8 @@ namespace levelsinter
   std::vector<std::string>
   ViscousFlow<dim>::point_metric_names() const
   {
-    if (conformation_model)
-      return {"trace_c"};
+    if (viscoelastic)
+      return viscoelastic->point_metric_names();
     return {};
   }
 
@@ -348,24 +268,9 @@ namespace levelsinter
   ViscousFlow<dim>::point_metric_values(const LevelSetField<dim> &alpha,
                                         const Point<dim>         &point) const
   {
-    if (!conformation_model)
-      return {};
-    // Before the first step c = I.
-    if (trace_c.size() != alpha.dof_handler().n_dofs())
-      return {3.};
-    return {value_at_point<double>(
-      alpha.dof_handler(),
-      point,
-      "tr c",
-      [&](const auto &cell, const Point<dim> &unit) {
-        FEValues<dim> values(alpha.dof_handler().get_fe(),
-                             Quadrature<dim>(unit),
-                             update_values);
-        values.reinit(cell);
-        std::vector<double> v(1);
-        values.get_function_values(trace_c, v);
-        return v[0];
-      })};
+    if (viscoelastic)
+      return viscoelastic->point_metric_values(alpha, point);
+    return {};
   }
 
   template <int dim>
@@ -387,17 +292,8 @@ namespace levelsinter
       data_out.add_data_vector(alpha.dof_handler(),
                                kappa,
                                "viscous_flow_curvature");
-    if (trace_c.size() == alpha.dof_handler().n_dofs())
-      {
-        data_out.add_data_vector(alpha.dof_handler(),
-                                 trace_c,
-                                 "viscoelastic_trace_c");
-        for (unsigned int d = 0; d < 3; ++d)
-          data_out.add_data_vector(alpha.dof_handler(),
-                                   stretches[d],
-                                   "viscoelastic_stretch_" +
-                                     std::to_string(d + 1));
-      }
+    if (viscoelastic)
+      viscoelastic->add_output_fields(alpha, data_out);
   }
 
   template <int dim>

@@ -2,11 +2,16 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 
-#include <levelsinter/mechanics/conformation_model.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <levelsinter/mechanics/viscoelastic_state.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <memory>
+#include <vector>
 
 namespace levelsinter
 {
@@ -42,11 +47,12 @@ namespace levelsinter
   };
 
   /**
-   * What a law with memory reads at one point: the strain of the previous
-   * step's displacement (elastic solid) and the polymer stress
-   * tau^n = G (c^n - I) of the conformation field (viscoelastic melts)
-   * with its hoop entry tau_thth (0 on a plane scene; the elastic solid is
-   * refused on axisymmetric scenes, so its strain has none).
+   * What a law with memory reads at one point, filled by the law itself
+   * (PhaseLaw::material_states()): the strain of the previous step's
+   * displacement (elastic solid) and the polymer stress tau^n = G (c^n - I)
+   * of the conformation field (viscoelastic melts) with its hoop entry
+   * tau_thth (0 on a plane scene; the elastic solid is refused on
+   * axisymmetric scenes, so its strain has none).
    */
   template <int dim>
   struct MaterialState
@@ -54,6 +60,20 @@ namespace levelsinter
     SymmetricTensor<2, dim> old_strain;
     SymmetricTensor<2, dim> polymer_stress;
     double                  polymer_hoop_stress = 0;
+  };
+
+  /**
+   * Where a law with memory finds its state on one cell: FEValues of the
+   * operator's element and of the level set's, both reinit on the cell
+   * with the same quadrature, and the displacement u^{n-1} the operator
+   * keeps (TwoPhaseStokes::displacement(), ghosted).
+   */
+  template <int dim>
+  struct MaterialInputs
+  {
+    const FEValues<dim>                      &values;
+    const FEValues<dim>                      &level_set_values;
+    const TrilinosWrappers::MPI::BlockVector &displacement;
   };
 
   /**
@@ -83,21 +103,22 @@ namespace levelsinter
     virtual PhaseCoefficients
     coefficients(const PhaseFractions &fractions) const = 0;
 
-    /** Whether history() reads the strain of the previous step's
-     * displacement (then the operator keeps the displacement). */
+    /** Whether the law has memory: then the operator asks it for its
+     * state on every cell (material_states()) and for the history
+     * right-hand sides at every point (history()). */
     virtual bool
     has_history() const
     {
       return false;
     }
 
-    /** Whether history() reads the polymer stress (then the operator needs
-     * a conformation field). */
-    virtual bool
-    has_polymer_stress() const
-    {
-      return false;
-    }
+    /** The law's state at the quadrature points of @p inputs: the entries
+     * it reads in history(), in @p states[k] for point k (sized at least
+     * to the number of points). */
+    virtual void
+    material_states(const MaterialInputs<dim> &,
+                    std::vector<MaterialState<dim>> &) const
+    {}
 
     /** The history right-hand sides for the state @p state at the point. */
     virtual HistoryTerms<dim>
@@ -187,6 +208,11 @@ namespace levelsinter
       return true;
     }
 
+    /** The strain eps(u^{n-1}) of the operator's displacement. */
+    void
+    material_states(const MaterialInputs<dim>       &inputs,
+                    std::vector<MaterialState<dim>> &states) const override;
+
     HistoryTerms<dim>
     history(const PhaseFractions     &f,
             const MaterialState<dim> &state) const override;
@@ -219,32 +245,40 @@ namespace levelsinter
    * nonlinear model then updates c with v^{n+1} (ConformationField). At
    * lambda -> 0 (eta_p = G lambda fixed) this is the Newtonian law with
    * eta_s + eta_p whatever dt; at lambda -> infinity the elastic rate form
-   * (viscosity G dt, as ElasticSolidFluid).
+   * (viscosity G dt, as ElasticSolidFluid). tau^n is read from
+   * @p polymer, the melt's ViscoelasticState.
    */
   template <int dim>
   class ViscoelasticPhases : public PhaseLaw<dim>
   {
   public:
-    ViscoelasticPhases(const double solvent_viscosity,
-                       const double polymer_viscosity,
-                       const double relaxation_time,
-                       const double fluid_viscosity,
-                       const double fluid_compressibility)
+    ViscoelasticPhases(const double                    solvent_viscosity,
+                       const double                    polymer_viscosity,
+                       const double                    relaxation_time,
+                       const double                    fluid_viscosity,
+                       const double                    fluid_compressibility,
+                       const ViscoelasticState<dim>   &polymer)
       : eta_s(solvent_viscosity)
       , eta_p(polymer_viscosity)
       , lambda(relaxation_time)
       , eta_f(fluid_viscosity)
       , c(fluid_compressibility)
+      , polymer(polymer)
     {}
 
     PhaseCoefficients
     coefficients(const PhaseFractions &f) const override;
 
     bool
-    has_polymer_stress() const override
+    has_history() const override
     {
       return true;
     }
+
+    /** The polymer stress tau^n and its hoop entry. */
+    void
+    material_states(const MaterialInputs<dim>       &inputs,
+                    std::vector<MaterialState<dim>> &states) const override;
 
     HistoryTerms<dim>
     history(const PhaseFractions     &f,
@@ -263,18 +297,17 @@ namespace levelsinter
     double eta_f;
     double c;
     double dt = 0;
+    const ViscoelasticState<dim> &polymer;
   };
-
-  /** The conformation model of a viscoelastic 'Phase law'. */
-  ConformationModel::Parameters
-  conformation_parameters(const PhaseLawParameters &law);
 
   /**
    * The law a scene asks for ('Phase law/Law'), with the atmosphere of
-   * 'Viscous flow'.
+   * 'Viscous flow'; a viscoelastic law reads the polymer stress of
+   * @p polymer (required for it, unused otherwise).
    */
   template <int dim>
   std::unique_ptr<PhaseLaw<dim>>
-  make_phase_law(const PhaseLawParameters    &law,
-                 const ViscousFlowParameters &flow);
+  make_phase_law(const PhaseLawParameters     &law,
+                 const ViscousFlowParameters  &flow,
+                 const ViscoelasticState<dim> *polymer = nullptr);
 } // namespace levelsinter

@@ -22,6 +22,23 @@ namespace levelsinter
   };
 
   /**
+   * One term on the free box faces (off the symmetry planes): the operator
+   * calls it on every such face of a cell (StokesCellData::free_faces),
+   * after the cell's StokesAssemblers.
+   */
+  template <int dim>
+  class StokesFaceAssembler
+  {
+  public:
+    virtual ~StokesFaceAssembler() = default;
+
+    virtual void
+    assemble(const StokesCellData<dim>                  &data,
+             const typename StokesCellData<dim>::Face &face,
+             CellContribution                           &cell) const = 0;
+  };
+
+  /**
    * The bulk operator of Eq. 93-94: a1 eps(v):eps(w) - a2 p div w,
    * -q div v - c_p p q, the phase law's history right-hand sides, and the
    * Schur approximation's mass M_{2/a1_K + c_p} (cell-mean a1, Grinevich &
@@ -106,7 +123,7 @@ namespace levelsinter
 
   /** External pressure on the free box faces: traction -p_ext n. */
   template <int dim>
-  class TractionAssembler : public StokesAssembler<dim>
+  class TractionAssembler : public StokesFaceAssembler<dim>
   {
   public:
     explicit TractionAssembler(const double external_pressure)
@@ -114,8 +131,9 @@ namespace levelsinter
     {}
 
     void
-    assemble(const StokesCellData<dim> &data,
-             CellContribution          &cell) const override;
+    assemble(const StokesCellData<dim>                  &data,
+             const typename StokesCellData<dim>::Face &face,
+             CellContribution                           &cell) const override;
 
   private:
     const double p_ext;

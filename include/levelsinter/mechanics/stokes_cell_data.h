@@ -2,15 +2,28 @@
 
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
 
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/hp/fe_collection.h>
+
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
+#include <deal.II/non_matching/fe_values.h>
+#include <deal.II/non_matching/mesh_classifier.h>
+
+#include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/scene_measure.h>
 #include <levelsinter/mechanics/phase_law.h>
 
+#include <memory>
 #include <vector>
 
 namespace levelsinter
@@ -19,10 +32,13 @@ namespace levelsinter
 
   /**
    * What the assemblers of the two-phase Stokes operator read on one cell
-   * (the scratch of StokesAssembler): shape data and phase coefficients at
-   * the volume quadrature points, the points of the surface measure and the
-   * points on free box faces. TwoPhaseStokes fills it per cell; each
-   * assembler adds one term of Eq. 93-94 to a CellContribution.
+   * (the scratch of StokesAssembler and StokesFaceAssembler, as Lethe's
+   * ScratchData): reinit() gathers everything at the cell's points (shape
+   * data, the phase fractions and the phase law's coefficients, its
+   * material state and history terms, the ASGS tau, the balanced force,
+   * the points of the surface measure, smeared or from the cut-cell
+   * quadrature, and the free box faces); the assemblers only consume it,
+   * each adding one term of Eq. 93-94 to a CellContribution.
    *
    * Weights are in the scene's measure (SceneMeasure): on an axisymmetric
    * scene JxW and dS carry 2 pi r, and the hoop strain e_thth(w) = w_r / r
@@ -31,8 +47,39 @@ namespace levelsinter
    * both (doc/numerics.md, "Axisymmetric scenes").
    */
   template <int dim>
-  struct StokesCellData
+  class StokesCellData
   {
+  public:
+    /** Where the interface measure of the surface terms comes from. */
+    enum class SurfaceMeasure
+    {
+      none,    // no surface term
+      smeared, // regularised Dirac, dS -> delta(alpha) |grad alpha| dV
+      sharp    // cut-cell quadrature on {alpha_h = 0}
+    };
+
+    /** What reinit() reads, fixed for one assembly. */
+    struct Inputs
+    {
+      const LevelSetField<dim> &alpha;
+      const PhaseLaw<dim>      &law;
+      // u^{n-1} of a law with history (PhaseLaw::material_states()).
+      const TrilinosWrappers::MPI::BlockVector &displacement;
+      // The balanced force gamma kappa_h grad H_h (csf-curvature): nodal
+      // kappa_h and H_h on the level set's DoFs, ghosted; none otherwise.
+      const TrilinosWrappers::MPI::Vector *curvature      = nullptr;
+      const TrilinosWrappers::MPI::Vector *solid_fraction = nullptr;
+      double                               surface_tension = 0;
+      SurfaceMeasure                       surface = SurfaceMeasure::none;
+      // E of Eq. 102-104 in cell sizes, at the band's refinement level.
+      double       interface_half_width_cells = 1.5;
+      unsigned int band_level                 = 0;
+      double       stabilisation_constant     = 1; // c_tau of Eq. 99
+      // Gather the free box faces (those off the symmetry planes).
+      bool                            free_faces = false;
+      std::vector<types::boundary_id> symmetry_boundaries;
+    };
+
     /** One point of the surface measure of Gamma: unit normal, weight dS
      * and the gradients of the velocity shape functions there. */
     struct SurfacePoint
@@ -51,8 +98,8 @@ namespace levelsinter
       }
     };
 
-    /** One quadrature point of a free box face: outer normal, weight and
-     * the velocity shape values. */
+    /** One quadrature point of a box face: outer normal, weight and the
+     * velocity shape values. */
     struct FacePoint
     {
       Tensor<1, dim>              normal;
@@ -60,15 +107,21 @@ namespace levelsinter
       std::vector<Tensor<1, dim>> w;
     };
 
-    /** Size for @p n_dofs shape functions; @p component[i] is the vector
-     * component of shape function i (dim: pressure). */
-    explicit StokesCellData(const std::vector<unsigned int> &component);
+    /** One free box face of the cell, what a StokesFaceAssembler reads. */
+    struct Face
+    {
+      types::boundary_id     boundary_id = 0;
+      std::vector<FacePoint> points;
+    };
 
-    /** Shape data from @p values (reinit on the cell, with its
-     * quadrature points), weights in @p measure; resets the surface and
-     * face points. */
+    /** For the Stokes element @p fe (velocity, then pressure) and the
+     * assembly's @p inputs, which must outlive this object. */
+    StokesCellData(const FESystem<dim> &fe, const Inputs &inputs);
+
+    /** Gather what the assemblers read on @p cell (locally owned, of the
+     * operator's DoFHandler). */
     void
-    reinit(const FEValues<dim> &values, const SceneMeasure &measure);
+    reinit(const typename DoFHandler<dim>::active_cell_iterator &cell);
 
     bool
     is_pressure(const unsigned int i) const
@@ -124,18 +177,65 @@ namespace levelsinter
     }
 
     std::vector<SurfacePoint> surface;
-    std::vector<FacePoint>    free_faces;
+    std::vector<Face>         free_faces;
+
+  private:
+    /** Shape data and weights from @p values (reinit on the cell). */
+    void
+    reinit_shapes(const FEValues<dim> &values);
+
+    /** The phase coefficients, the law's history and tau at the points
+     * (and the cell's size and mean a1). */
+    void
+    gather_phases(const FEValues<dim> &values,
+                  const FEValues<dim> &level_set_values,
+                  const double         E);
+
+    void
+    gather_smeared_surface(const double E);
+
+    void
+    gather_sharp_surface(
+      const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    void
+    gather_free_faces(
+      const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    const Inputs       &inputs;
+    const SceneMeasure &measure;
+    // Three Gauss points per direction in the transition zone, two where
+    // the phases are uniform (see reinit()).
+    FEValues<dim>     transition_values;
+    FEValues<dim>     uniform_values;
+    FEValues<dim>     transition_level_set_values;
+    FEValues<dim>     uniform_level_set_values;
+    FEFaceValues<dim> face_values;
+    // Sharp surface measure only.
+    const hp::FECollection<dim>                       fe_collection;
+    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
+    std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
+    // At the volume points (sized for the largest rule).
+    Vector<double>                       vertex_alpha;
+    std::vector<double>                  alpha_q;
+    std::vector<Tensor<1, dim>>          grad_alpha_q;
+    std::vector<double>                  kappa_q;
+    std::vector<Tensor<1, dim>>          grad_heaviside_q;
+    std::vector<MaterialState<dim>>      states;
   };
 
   /** A cell's share of the system matrix, the Schur approximation and the
-   * right-hand side. Same-type pairs (velocity-velocity, pressure-pressure)
-   * are filled in the upper triangle only, mirrored by symmetrise(). */
+   * right-hand side, and the DoFs it goes to (the copy data of step-32's
+   * cell worker / copier split). Same-type pairs (velocity-velocity,
+   * pressure-pressure) are filled in the upper triangle only, mirrored by
+   * symmetrise(). */
   struct CellContribution
   {
     explicit CellContribution(const unsigned int n)
       : matrix(n, n)
       , schur(n, n)
       , rhs(n)
+      , dof_indices(n)
     {}
 
     void
@@ -146,8 +246,9 @@ namespace levelsinter
       rhs    = 0;
     }
 
-    FullMatrix<double> matrix;
-    FullMatrix<double> schur;
-    Vector<double>     rhs;
+    FullMatrix<double>                   matrix;
+    FullMatrix<double>                   schur;
+    Vector<double>                       rhs;
+    std::vector<types::global_dof_index> dof_indices;
   };
 } // namespace levelsinter

@@ -15,7 +15,6 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
-#include <levelsinter/mechanics/conformation_field.h>
 #include <levelsinter/mechanics/phase_law.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -55,9 +54,12 @@ namespace levelsinter
    * position x + dt v adds dt gamma int_Gamma grad_Gamma v : grad_Gamma w
    * to the velocity block, on the same surface measure as the load (sharp
    * for sharp, smeared otherwise).
-   * Each term is one StokesAssembler (stokes_assemblers.h) over the cell
-   * data of StokesCellData; a law with history (the elastic solid) reads
-   * the displacement kept here (advance_displacement()).
+   * Each term is one StokesAssembler (stokes_assemblers.h), or a
+   * StokesFaceAssembler for a term on the free box faces, over the cell
+   * data of StokesCellData, which gathers what they read; a law with
+   * history fills its own state (PhaseLaw::material_states()): the
+   * elastic solid reads the displacement kept here
+   * (advance_displacement()), a viscoelastic melt its ViscoelasticState.
    */
   template <int dim>
   class TwoPhaseStokes
@@ -138,17 +140,7 @@ namespace levelsinter
     remove_rigid_motion(const LevelSetField<dim> &alpha);
 
     /**
-     * The conformation field whose polymer stress a viscoelastic law reads
-     * (PhaseLaw::has_polymer_stress()); it lives on the level set's DoFs.
-     */
-    void
-    set_conformation(const ConformationField<dim> &field)
-    {
-      conformation = &field;
-    }
-
-    /**
-     * Displacement of a law with history (PhaseLaw::has_history()):
+     * Displacement of the elastic solid (ElasticSolidFluid):
      * u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity.
      * Call once per accepted step, after solve().
      */
@@ -202,7 +194,6 @@ namespace levelsinter
     Settings                  settings;
     const FreeRigidMotions    free_motions;
     const PhaseLaw<dim>      &phase_law;
-    const ConformationField<dim> *conformation = nullptr;
     FESystem<dim>             finite_element;
     DoFHandler<dim>           dofs;
     std::vector<IndexSet>     owned_partitioning;

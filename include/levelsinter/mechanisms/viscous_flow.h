@@ -11,10 +11,10 @@
 
 #include <levelsinter/mechanics/phase_law.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
+#include <levelsinter/mechanics/viscoelastic_state.h>
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
-#include <array>
 #include <memory>
 
 namespace levelsinter
@@ -24,7 +24,9 @@ namespace levelsinter
    * tension. Each step solves the two-phase Stokes problem from alpha and
    * adds its velocity to the interface velocity. The csf-curvature form
    * gets its curvature from the level set (projection, see
-   * update_curvature()) unless a test prescribes the exact one.
+   * update_curvature()) unless a test prescribes the exact one. The
+   * polymer of a viscoelastic melt is a ViscoelasticState, whose fields
+   * and metrics this mechanism passes on.
    */
   template <int dim>
   class ViscousFlow : public Mechanism<dim>
@@ -100,13 +102,13 @@ namespace levelsinter
                       DataOut<dim>             &data_out) const override;
 
     /** The conformation tensor of a viscoelastic melt (its committed
-     * state) travels across mesh adaptation. */
+     * state, ViscoelasticState) travels across mesh adaptation. */
     void
     add_state(const LevelSetField<dim> &alpha,
               StateTransfer<dim>       &transfer) override;
 
-    /** Stokes iterations and CPU seconds; for a viscoelastic melt also the
-     * conformation solves' GMRES iterations and the largest tr c. */
+    /** Stokes iterations and CPU seconds; for a viscoelastic melt also
+     * ViscoelasticState's. */
     std::vector<std::string>
     metric_names() const override;
 
@@ -114,14 +116,14 @@ namespace levelsinter
     metric_values() const override;
 
     /** A viscoelastic melt: the conformation of the step becomes the
-     * state (and tr c, max tr c are measured on it). */
+     * state (ViscoelasticState::accept()). */
     void
     accept_step(const LevelSetField<dim> &alpha) override;
 
     void
     reject_step() override;
 
-    /** A viscoelastic melt: tr c (the polymer stretch) at the point. */
+    /** A viscoelastic melt: ViscoelasticState's (tr c at the point). */
     std::vector<std::string>
     point_metric_names() const override;
 
@@ -167,24 +169,14 @@ namespace levelsinter
     void
     update_curvature(const LevelSetField<dim> &alpha);
 
-    /** The conformation of the step solved last becomes the state (the
-     * step was accepted); c relaxes to I beyond the filtered band in the
-     * atmosphere, which carries no polymer. */
-    void
-    commit_conformation(const LevelSetField<dim> &alpha);
-
-    /** Where the flow stretches c (ConformationField::advance()): 1 in
-     * the melt, fading to 0 over the atmosphere's side of the transition
-     * zone. */
-    TrilinosWrappers::MPI::Vector
-    stretch_weight(const LevelSetField<dim> &alpha) const;
-
     const ViscousFlowParameters          parameters;
     const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                 filter;
     const unsigned int                   band_level;
     TimerOutput                         &timer;
-    const std::unique_ptr<PhaseLaw<dim>> phases;
+    // A viscoelastic melt's polymer (none otherwise), read by its law.
+    const std::unique_ptr<ViscoelasticState<dim>> viscoelastic;
+    const std::unique_ptr<PhaseLaw<dim>>          phases;
     // eta_s, plus eta_p for a viscoelastic melt: the capillary limit's.
     const double zero_shear_viscosity;
     // A viscoelastic melt's relaxation time lambda (0 otherwise).
@@ -196,17 +188,6 @@ namespace levelsinter
     // csf-curvature: the level set H_h and kappa are taken from, alpha
     // redistanced where it is no distance (redistanced_level_set()).
     TrilinosWrappers::MPI::Vector              interface_level_set;
-    // Viscoelastic melts only: the conformation tensor, whether a step
-    // advanced it that is not accepted yet, tr c at the nodes for the
-    // output and its maximum.
-    std::unique_ptr<ConformationModel>          conformation_model;
-    std::unique_ptr<ConformationField<dim>>     conformation;
-    bool                                        conformation_pending = false;
-    unsigned int                                conformation_iterations = 0;
-    TrilinosWrappers::MPI::Vector               trace_c;
-    // The principal stretches sqrt(eigenvalues of c), largest first.
-    std::array<TrilinosWrappers::MPI::Vector, 3> stretches;
-    double                                      max_trace_c = 3;
     double                               h_min           = 0;
     // Interface measure at the start of the step (check_step()), measured
     // at its first trial and kept for its CFL re-choice and retries.
