@@ -7,6 +7,7 @@
 
 #include <levelsinter/analysis/packing_analysis.h>
 #include <levelsinter/analysis/particle_centres.h>
+#include <levelsinter/analysis/particle_id_field.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
@@ -134,9 +135,9 @@ namespace levelsinter
     }
 
     /**
-     * Add the mechanisms' fields (Mechanism::add_output_fields()) to
-     * @p data_out: what the field output writes besides alpha and the
-     * velocity, for tests that read them without files.
+     * Add the mechanisms' fields (Mechanism::add_output_fields()) and
+     * particle_id to @p data_out: what the field output writes besides
+     * alpha and the velocity, for tests that read them without files.
      */
     void
     add_output_fields(DataOut<dim> &data_out) const;
@@ -211,6 +212,8 @@ namespace levelsinter
     // Made at the first metrics row if the scene asks for it.
     std::unique_ptr<PackingAnalysis<dim>>     packing_analysis;
     std::unique_ptr<ParticleCentres<dim>>     particle_centres;
+    // The particle_id output field of a scene of two or more particles.
+    std::unique_ptr<ParticleIdField<dim>>     particle_ids;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;
