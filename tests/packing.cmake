@@ -50,10 +50,10 @@ packing_error_test(fraction_unreachable "--fraction 0.7: not reached"
   --particles 20 --radius 0.1 --fraction 0.7 --max-iterations 3000)
 # A target above the jammed density is an error naming the fraction
 # reached, not a looser packing written with exit code 0 (these 27 equal
-# spheres in hard walls jam as a simple cubic lattice, pi/6 = 0.5236,
+# spheres in hard walls jam as a simple cubic lattice, pi/6 = 0.523599,
 # after 33469 iterations, 5 s).
 packing_error_test(fraction_jammed
-  "--fraction 0.9: not reached: the packing jammed at solid fraction 0.5236"
+  "--fraction 0.9: not reached: the packing jammed at solid fraction 0.5235"
   --particles 27 --radius 0.1 --fraction 0.9)
 # An existing output file is refused unless --overwrite, as levelsinter
 # refuses an output directory holding a run (bad_input.cmake puts
