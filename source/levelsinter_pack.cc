@@ -3,6 +3,7 @@
 #include <levelsinter/scene/packing_generator.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -87,7 +88,18 @@ main(int argc, char **argv)
             return 0;
           }
       std::string    output_file;
-      const auto     settings = packing::parse_arguments(arguments, output_file);
+      bool           overwrite = false;
+      const auto     settings =
+        packing::parse_arguments(arguments, output_file, overwrite);
+      // As levelsinter refuses an output directory holding a run: checked
+      // before the (possibly long) generation.
+      if (std::filesystem::is_directory(output_file))
+        throw std::runtime_error("--output: '" + output_file +
+                                 "' is a directory; give a file name");
+      if (std::filesystem::exists(output_file) && !overwrite)
+        throw std::runtime_error("--output: '" + output_file +
+                                 "' exists; choose another file, or replace "
+                                 "it with --overwrite");
       const auto     result   = packing::generate(settings);
       const auto     lines    = summary(settings, result);
       std::string    command  = "levelsinter-pack";
@@ -95,7 +107,10 @@ main(int argc, char **argv)
         command += " " + (a.find_first_of(" ;") == std::string::npos ?
                             a :
                             "\"" + a + "\"");
-      std::ofstream out(output_file);
+      // Written next to it and renamed: a failed write leaves an existing
+      // file as it was.
+      const std::string temporary = output_file + ".tmp";
+      std::ofstream     out(temporary);
       if (!out)
         throw std::runtime_error("--output: '" + output_file +
                                  "' cannot be opened for writing");
@@ -110,9 +125,14 @@ main(int argc, char **argv)
       for (const auto &p : result.particles)
         for (unsigned int k = 0; k < p.size(); ++k)
           out << p[k] << (k + 1 < p.size() ? "," : "\n");
+      out.close();
       if (!out)
-        throw std::runtime_error("--output: writing '" + output_file +
-                                 "' failed");
+        {
+          std::filesystem::remove(temporary);
+          throw std::runtime_error("--output: writing '" + output_file +
+                                   "' failed");
+        }
+      std::filesystem::rename(temporary, output_file);
       std::cout << "wrote " << output_file << "\n";
     }
   catch (const std::exception &e)

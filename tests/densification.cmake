@@ -53,6 +53,16 @@ set_tests_properties(densification_circles_apart_2d PROPERTIES
 set_tests_properties(densification_spheres_apart_3d PROPERTIES
   FIXTURES_REQUIRED spheres_apart_3d)
 
+# The particle_id output field (analysis/particle_id_field.h) through
+# Simulation::add_output_fields on the two-particle scene at t = 0, on 1
+# and 2 ranks: every cell's id against the power cell of its centre, -1
+# where the cell has no solid.
+foreach(np 1 2)
+  add_test(NAME particle_id_field_np${np}
+    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${CENTRES} ids
+      ${CMAKE_SOURCE_DIR}/parameter_files/two_particles_2d.prm)
+endforeach()
+
 # --- The volume-diffusion velocity in the field output -------------------
 add_executable(volume_diffusion_output volume_diffusion_output.cc)
 target_link_libraries(volume_diffusion_output levelsinter_lib)

@@ -48,6 +48,30 @@ packing_error_test(neck_out_of_range "--neck: expected x0/R in [0, 1)"
 # 0.7 is above what any random packing of equal spheres reaches.
 packing_error_test(fraction_unreachable "--fraction 0.7: not reached"
   --particles 20 --radius 0.1 --fraction 0.7 --max-iterations 3000)
+# A target above the jammed density is an error naming the fraction
+# reached, not a looser packing written with exit code 0 (these 27 equal
+# spheres in hard walls jam as a simple cubic lattice, pi/6 = 0.523599,
+# after 33469 iterations, 5 s).
+packing_error_test(fraction_jammed
+  "--fraction 0.9: not reached: the packing jammed at solid fraction 0.5235"
+  --particles 27 --radius 0.1 --fraction 0.9)
+# An existing output file is refused unless --overwrite, as levelsinter
+# refuses an output directory holding a run (bad_input.cmake puts
+# out/metrics.csv there and checks that it is left as it was).
+packing_error_test(output_exists "--output: 'out/metrics.csv' exists"
+  --particles 5 --radius 0.1 --output out/metrics.csv)
+packing_error_test(output_directory "--output: 'out' is a directory"
+  --particles 5 --radius 0.1 --output out)
+# --overwrite replaces it: the file made at configure time, then the
+# previous run's packing.
+set(OVERWRITTEN ${CMAKE_CURRENT_BINARY_DIR}/packing_overwrite.csv)
+file(WRITE ${OVERWRITTEN} "previous file\n")
+add_test(NAME packing_overwrite COMMAND ${PACK} --particles 5 --radius 0.1
+  --overwrite --output ${OVERWRITTEN})
+add_test(NAME packing_overwritten COMMAND ${CMAKE_COMMAND} -E cat
+  ${OVERWRITTEN})
+set_tests_properties(packing_overwritten PROPERTIES DEPENDS packing_overwrite
+  PASS_REGULAR_EXPRESSION "^# levelsinter-pack --particles 5 ")
 packing_error_test(domain_too_small "--domain: the container along axis 0"
   --particles 20 --radius 0.1 --domain 0,0,0:0.3,1,1)
 packing_error_test(unwritable "cannot be opened for writing"
@@ -64,7 +88,7 @@ foreach(run a b c)
   endif()
   file(MAKE_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packing_seed_${run})
   add_test(NAME packing_seed_${run} COMMAND ${PACK} ${PACK_SMALL} --seed ${seed}
-    --output packing.csv
+    --output packing.csv --overwrite
     WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR}/packing_seed_${run})
 endforeach()
 add_test(NAME packing_seed_same COMMAND ${CMAKE_COMMAND} -E compare_files

@@ -156,7 +156,9 @@ main(int argc, char **argv)
       arguments.push_back("--output");
       arguments.push_back("unused.csv");
       std::string  unused;
-      const auto   settings = packing::parse_arguments(arguments, unused);
+      bool         overwrite;
+      const auto   settings =
+        packing::parse_arguments(arguments, unused, overwrite);
       const auto   spec     = split(argv[1]);
       if (spec[0] == "rcp")
         check_rcp(spec, settings);

@@ -30,9 +30,19 @@ bad_input_test(mesh_beyond_memory "GB of memory of this machine"
   --set "Mesh refinement/Maximum level=14"
   ${CMAKE_SOURCE_DIR}/parameter_files/two_spheres_3d.prm)
 
-# Two particles with the same centre.
-bad_input_test(coincident_particles "particles 1 and 3 have the same centre"
+# Particles that cannot be a sintering problem (scene/particles.h,
+# check_particle_pairs): the same centre (the smaller one inside the
+# other), a particle of the particle file inside another (named by file and
+# line), centres closer than one band cell (1/32 at level 5).
+bad_input_test(coincident_particles
+  "particle 3 (entry 'Geometry/Particles', item 3: centre 0.32, 0.5, radius 0.1) lies inside particle 1 (entry 'Geometry/Particles', item 1"
   ${BAD}/coincident_particles.prm)
+bad_input_test(particle_inside_another
+  "inside_particles.csv', line 4: centre 0.55, 0.5, radius 0.08) lies inside particle 2 (particle file"
+  ${BAD}/inside_particle.prm)
+bad_input_test(centres_closer_than_a_cell
+  "have centres 0.01 apart, less than one cell of the interface band (0.03125)"
+  ${BAD}/close_centres.prm)
 
 # A particle smaller than 2 band cells is refused with the level that
 # resolves it.

@@ -10,6 +10,12 @@
 //   particle_centres_test run METRICS SPEED LIMIT
 //     metrics.csv of a run whose two particles move apart at SPEED each:
 //     centre_distance(t) - centre_distance(0) against 2 SPEED t.
+//   particle_centres_test ids SCENE.prm
+//     the particle_id output field of a 2D scene of particles, read from
+//     the patches of Simulation::add_output_fields() at t = 0: on every
+//     cell with a vertex alpha <= 0 the particle whose power cell holds
+//     the cell's centre (computed here from the scene's list), -1 on the
+//     others; each particle and -1 must occur.
 //
 // The bound of the shift case: the centroid of a solid whose boundary
 // lies within delta of the exact one moves by at most
@@ -26,12 +32,16 @@
 #include <levelsinter/analysis/particle_centres.h>
 #include <levelsinter/analysis/reference_shapes.h>
 #include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/scene/command_line.h>
+#include <levelsinter/time/simulation.h>
 
 #include "refined_level_set.h"
 #include "study_support.h"
 #include "study_table.h"
 
+#include <algorithm>
 #include <iostream>
+#include <limits>
 
 using namespace levelsinter;
 
@@ -93,6 +103,81 @@ namespace
     check("largest error / bound", worst, options, "max-bound-ratio");
   }
 
+  // DataOut's per-component names, as the writers label the patches.
+  struct NamedDataOut : DataOut<2>
+  {
+    using DataOut<2>::get_dataset_names;
+  };
+
+  void
+  id_check(const std::string &scene_file)
+  {
+    const SceneParameters scene = read_scene(scene_file, {});
+    Simulation<2>         simulation(scene, MPI_COMM_WORLD, std::cout);
+    simulation.initialise();
+    NamedDataOut data_out;
+    data_out.attach_dof_handler(simulation.level_set().dof_handler());
+    data_out.add_data_vector(simulation.level_set().alpha(), "alpha");
+    simulation.add_output_fields(data_out);
+    data_out.build_patches();
+    const auto  names = data_out.get_dataset_names();
+    const auto  index = [&](const std::string &name) {
+      const auto it = std::find(names.begin(), names.end(), name);
+      if (it == names.end())
+        throw std::runtime_error("no output field " + name);
+      return it - names.begin();
+    };
+    const auto  alpha = index("alpha"), id = index("particle_id");
+    const auto &particles = scene.geometry.particles;
+    std::vector<unsigned int> seen(particles.size() + 1, 0);
+    unsigned int              wrong = 0, cells = 0;
+    for (const auto &patch : data_out.get_patches())
+      {
+        Point<2> centre;
+        bool     solid = false;
+        for (unsigned int v = 0; v < 4; ++v)
+          {
+            centre += patch.vertices[v] / 4.;
+            solid = solid || patch.data(alpha, v) <= 0;
+          }
+        int expected = -1;
+        if (solid)
+          {
+            double power = std::numeric_limits<double>::max();
+            for (unsigned int i = 0; i < particles.size(); ++i)
+              if (const double p =
+                    centre.distance_square(Point<2>(particles[i][0],
+                                                    particles[i][1])) -
+                    particles[i][2] * particles[i][2];
+                  p < power)
+                {
+                  power    = p;
+                  expected = i;
+                }
+          }
+        ++cells;
+        wrong += patch.data(id, 0) != expected;
+        ++seen[expected + 1];
+      }
+    wrong = Utilities::MPI::sum(wrong, MPI_COMM_WORLD);
+    cells = Utilities::MPI::sum(cells, MPI_COMM_WORLD);
+    Utilities::MPI::sum(seen, MPI_COMM_WORLD, seen);
+    const bool all_seen =
+      std::find(seen.begin(), seen.end(), 0u) == seen.end();
+    study::failures() += wrong > 0 || !all_seen;
+    if (study::is_root())
+      {
+        std::cout << "cells per id from -1:";
+        for (const unsigned int n : seen)
+          std::cout << " " << n;
+        std::cout << "\n"
+                  << (wrong == 0 ? "PASS" : "FAIL") << " particle_id: "
+                  << wrong << " of " << cells << " cells wrong\n"
+                  << (all_seen ? "PASS" : "FAIL")
+                  << " every particle and -1 occur\n";
+      }
+  }
+
   void
   run_check(const std::string &file, const double speed, const double limit)
   {
@@ -127,10 +212,12 @@ main(int argc, char **argv)
         }
       else if (args.size() == 5 && args[1] == "run")
         run_check(args[2], std::stod(args[3]), std::stod(args[4]));
+      else if (args.size() == 3 && args[1] == "ids")
+        id_check(args[2]);
       else
         throw std::runtime_error(
           "usage: particle_centres_test shift DIM LEVEL [options] | run "
-          "METRICS SPEED LIMIT");
+          "METRICS SPEED LIMIT | ids SCENE.prm");
     }
   catch (const std::exception &e)
     {

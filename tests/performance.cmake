@@ -51,7 +51,7 @@ foreach(spec 8:0.6:2 27:0.9:3 64:0.9:3)
   add_test(NAME performance_pack_${n} COMMAND $<TARGET_FILE:levelsinter-pack>
     --particles ${n} --radius-distribution uniform --radius-min 0.0633
     --radius-max 0.0797 --region 0,0,0:${side},${side},${side}
-    --domain 0,0,0:${side},${side},${side} --seed 1
+    --domain 0,0,0:${side},${side},${side} --seed 1 --overwrite
     --output ${CMAKE_CURRENT_BINARY_DIR}/performance_packing_${n}.csv)
   set_tests_properties(performance_pack_${n} PROPERTIES LABELS benchmark
     FIXTURES_SETUP performance_pack_${n})

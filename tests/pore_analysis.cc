@@ -7,15 +7,22 @@
 //   pore_analysis lattice DIM N SPACING RADIUS LEVELS [options]
 //     N^DIM balls on a simple cubic lattice centred in the unit box: pores,
 //     relative density in the centres' bounding box, necks, coordination.
+//     With --spacing-y B the rows are B apart along y (the exact pore and
+//     density then do not apply): with 2 RADIUS < B < 2 RADIUS + h the
+//     pairs along y are near misses, and the packing's neck_radius must
+//     still be the neck of the contacts along x.
 //   pore_analysis tracking
 //     pore matching between calls on synthetic pore lists.
 //
 // The mesh is refined around the interface up to each level of LEVELS and
 // alpha is the interpolated signed distance. Options: --csv FILE, limits
 // --max-volume-error, --max-density-error, --max-neck-error (relative, at
-// the finest level), --min-volume-order, and exact counts --closed-pores,
-// --open-pores, --contacts, --interior-coordination. Exit code 0 only if
-// every check passes.
+// the finest level; the neck error over the contacts' necks and over the
+// smallest of them, the metrics' neck_radius), --min-volume-order, and
+// exact counts --closed-pores, --open-pores, --contacts,
+// --interior-coordination, --near-misses. Every open pore must have no
+// sphericity (NaN: the box faces are not part of its surface). Exit code 0
+// only if every check passes.
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/mpi.h>
@@ -146,6 +153,12 @@ namespace
             {
               ++n_open;
               open_volume += pore.volume;
+              const bool undefined = std::isnan(pore.sphericity());
+              study::failures() += !undefined;
+              if (study::is_root())
+                std::cout << (undefined ? "PASS" : "FAIL")
+                          << " open pore sphericity " << pore.sphericity()
+                          << " (expected nan)\n";
             }
           else
             {
@@ -257,11 +270,15 @@ namespace
     scene.geometry.shape  = GeometryParameters::Shape::particles;
     scene.domain.lower_corner = std::vector<double>(dim, 0.);
     scene.domain.upper_corner = std::vector<double>(dim, 1.);
+    scene.domain.subdivisions = std::vector<unsigned int>(dim, 1);
+    const double a_y =
+      options.limits.count("spacing-y") ? options.limits.at("spacing-y") : a;
     for (unsigned int k = 0; k < std::pow(n, dim); ++k)
       {
         std::vector<double> row;
         for (unsigned int d = 0, rest = k; d < dim; ++d, rest /= n)
-          row.push_back(0.5 + (double(rest % n) - (n - 1) / 2.) * a);
+          row.push_back(0.5 +
+                        (double(rest % n) - (n - 1) / 2.) * (d == 1 ? a_y : a));
         row.push_back(R);
         scene.geometry.particles.push_back(row);
       }
@@ -279,7 +296,8 @@ namespace
 
     Table table({"level", "h", "closed_pores", "open_pores",
                  "pore_volume_error", "relative_density", "density_error",
-                 "neck_error", "contacts", "coordination_number",
+                 "neck_error", "neck_radius_error", "near_misses",
+                 "near_miss_gap_min", "contacts", "coordination_number",
                  "interior_coordination_number", "cells",
                  "analysis_seconds"},
                 options.csv);
@@ -288,6 +306,8 @@ namespace
         parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
         LevelSetField<dim>                        level_set(tria);
         build(tria, level_set, balls, level);
+        // Near misses: a gap below one cell of this mesh's band.
+        scene.refinement.max_level = level;
         PackingAnalysis<dim> analysis(scene, MPI_COMM_WORLD);
         const auto           start = std::chrono::steady_clock::now();
         const auto           row   = analysis.measure(0, 0, level_set);
@@ -311,14 +331,22 @@ namespace
                                   std::abs(pore.volume - exact_pore) / exact_pore);
         double neck_error = 0;
         for (const auto &neck : analysis.necks())
-          neck_error = std::max(neck_error,
-                                std::abs(neck.radius - exact_neck) / exact_neck);
+          if (neck.contact)
+            neck_error =
+              std::max(neck_error,
+                       std::abs(neck.radius - exact_neck) / exact_neck);
+        const double neck_radius_error =
+          std::abs(neck_measures::smallest_neck_radius(analysis.necks()) -
+                   exact_neck) /
+          exact_neck;
         table.add({double(level), std::ldexp(1., -int(level)),
                    value("closed_pores"), double(n_open), pore_error,
                    value("relative_density"),
                    std::abs(value("relative_density") - exact_density) /
                      exact_density,
-                   neck_error, value("contacts"), value("coordination_number"),
+                   neck_error, neck_radius_error, value("near_misses"),
+                   value("near_miss_gap_min"), value("contacts"),
+                   value("coordination_number"),
                    value("interior_coordination_number"),
                    double(tria.n_global_active_cells()), seconds});
       }
@@ -334,7 +362,11 @@ namespace
           "max-volume-error");
     check("density error", table.finest("density_error"), options,
           "max-density-error");
+    check_count("near misses", table.finest("near_misses"), options,
+                "near-misses");
     check("neck error", table.finest("neck_error"), options, "max-neck-error");
+    check("neck_radius error", table.finest("neck_radius_error"), options,
+          "max-neck-error");
   }
 
   // ---------------------------------------------------------------------

@@ -58,6 +58,16 @@ pores_on_1_and_2_ranks(pores_square_lattice_2d lattice 2 3 0.25 0.15 5,6,7
   --max-density-error 1e-3 --max-neck-error 2.4e-2 --contacts 12
   --interior-coordination 4)
 
+# Near misses (neck.h: contacts overlap or touch at t = 0, near misses
+# have a gap below one band cell): the square lattice above with its rows
+# 0.304 apart along y, a gap of 0.004 = h/2 at level 7, so 6 near misses
+# whatever the mesh makes of them. The packing's neck_radius (the smallest
+# neck over the contacts) must be the contacts' neck along x, 0.0829, to
+# the lattice's neck error; counting the near misses as necks gave 0 (or
+# the radius of whatever neck the mesh made in the gap).
+pores_on_1_and_2_ranks(pores_near_miss_2d lattice 2 3 0.25 0.15 7
+  --spacing-y 0.304 --near-misses 6 --contacts 6 --max-neck-error 2.4e-2)
+
 # Simple cubic 3 x 3 x 3, spacing 0.25. R = 0.55 a: necks formed, throats
 # open: no closed pore, one open pore space, 54 contacts, coordination 6 of
 # the centre sphere; measured at levels 5, 6: density error 1.5e-2, 3.8e-3

@@ -279,64 +279,90 @@ namespace levelsinter::neck_measures
     return narrowest_necks(RayCaster<dim>(level_set), {{c1, c2}})[0];
   }
 
-  template <int dim>
   std::vector<PairNeck>
-  pair_necks(const LevelSetField<dim>               &level_set,
-             const std::vector<std::vector<double>> &particles)
+  neighbour_pairs(const std::vector<std::vector<double>> &particles,
+                  const double                            near_miss_gap)
+  {
+    std::vector<PairNeck> pairs;
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      for (unsigned int j = i + 1; j < particles.size(); ++j)
+        {
+          const auto  &p = particles[i], &q = particles[j];
+          const auto   dim   = p.size() - 1;
+          double       d2    = 0;
+          for (unsigned int k = 0; k < dim; ++k)
+            d2 += (p[k] - q[k]) * (p[k] - q[k]);
+          const double sum = p[dim] + q[dim];
+          const double gap = std::sqrt(d2) - sum;
+          // Touching: within levelsinter-pack's default contact gap, far
+          // below any cell (the mesh joins such pairs).
+          const bool contact = particles.size() == 2 || gap <= 1e-3 * sum;
+          if (contact || gap < near_miss_gap)
+            pairs.push_back({i, j, contact, 0., 0.});
+        }
+    return pairs;
+  }
+
+  template <int dim>
+  void
+  measure_necks(const LevelSetField<dim>               &level_set,
+                const std::vector<std::vector<double>> &particles,
+                std::vector<PairNeck>                  &pairs)
   {
     // Equal particles neck on the mid-plane (by symmetry, and exactly on
     // symmetric meshes); unequal ones on their narrowest cross-section,
     // which a search finds.
-    std::vector<PairNeck>                              equal, unequal;
-    std::vector<Section<dim>>                          mid_planes;
-    std::vector<std::pair<Point<dim>, Point<dim>>>     searched;
-    // Candidates: pairs whose spheres overlap or whose gap is below one
-    // finest cell (a packing's nearly tangent contacts, which the mesh
-    // joins); a pair the level set does not join measures 0.
-    const double h_min =
-      finest_cell_size(level_set.dof_handler().get_triangulation());
-    for (unsigned int i = 0; i < particles.size(); ++i)
-      for (unsigned int j = i + 1; j < particles.size(); ++j)
-        {
-          Point<dim> c1, c2;
-          for (unsigned int d = 0; d < dim; ++d)
-            {
-              c1[d] = particles[i][d];
-              c2[d] = particles[j][d];
-            }
-          if (particles.size() == 2 ||
-              c1.distance(c2) < particles[i][dim] + particles[j][dim] + h_min)
-            {
-              if (particles[i][dim] == particles[j][dim])
-                {
-                  equal.push_back({i, j, 0.});
-                  mid_planes.push_back({c1, c2, 0.5});
-                }
-              else
-                {
-                  unequal.push_back({i, j, 0.});
-                  searched.emplace_back(c1, c2);
-                }
-            }
-        }
+    const auto centre = [&](const unsigned int i) {
+      Point<dim> c;
+      for (unsigned int d = 0; d < dim; ++d)
+        c[d] = particles[i][d];
+      return c;
+    };
+    std::vector<PairNeck *>                        equal, unequal, near_misses;
+    std::vector<Section<dim>>                      mid_planes;
+    std::vector<std::pair<Point<dim>, Point<dim>>> searched;
+    std::vector<Ray<dim>>                          gap_rays;
+    for (PairNeck &pair : pairs)
+      {
+        const Point<dim> c1 = centre(pair.i), c2 = centre(pair.j);
+        if (particles[pair.i][dim] == particles[pair.j][dim])
+          {
+            equal.push_back(&pair);
+            mid_planes.push_back({c1, c2, 0.5});
+          }
+        else
+          {
+            unequal.push_back(&pair);
+            searched.emplace_back(c1, c2);
+          }
+        if (!pair.contact)
+          {
+            const Tensor<1, dim> axis = (c2 - c1) / c1.distance(c2);
+            near_misses.push_back(&pair);
+            gap_rays.push_back({c1, axis});
+            gap_rays.push_back({c2, -axis});
+          }
+      }
     const RayCaster<dim>      caster(level_set);
     const std::vector<double> mid = cross_section_radii(caster, mid_planes);
     const std::vector<Neck>   narrowest = narrowest_necks(caster, searched);
     for (unsigned int k = 0; k < equal.size(); ++k)
-      equal[k].radius = mid[k];
+      equal[k]->radius = mid[k];
     for (unsigned int k = 0; k < unequal.size(); ++k)
-      unequal[k].radius = narrowest[k].radius;
-    // In the order of the pairs (i, j).
-    std::vector<PairNeck> necks;
-    std::merge(equal.begin(),
-               equal.end(),
-               unequal.begin(),
-               unequal.end(),
-               std::back_inserter(necks),
-               [](const PairNeck &x, const PairNeck &y) {
-                 return std::make_pair(x.i, x.j) < std::make_pair(y.i, y.j);
-               });
-    return necks;
+      unequal[k]->radius = narrowest[k].radius;
+    const std::vector<double> exits =
+      near_misses.empty() ? std::vector<double>() :
+                            caster.exit_distances(gap_rays);
+    for (PairNeck &pair : pairs)
+      pair.gap = std::numeric_limits<double>::quiet_NaN();
+    // A ray that leaves the box first (a partner across a symmetry plane)
+    // measures nothing: NaN.
+    for (unsigned int k = 0; k < near_misses.size(); ++k)
+      if (std::isfinite(exits[2 * k]) && std::isfinite(exits[2 * k + 1]))
+        near_misses[k]->gap = std::max(
+          0.,
+          centre(near_misses[k]->i).distance(centre(near_misses[k]->j)) -
+            exits[2 * k] - exits[2 * k + 1]);
   }
 
   double
@@ -344,7 +370,8 @@ namespace levelsinter::neck_measures
   {
     double neck = std::numeric_limits<double>::quiet_NaN();
     for (const PairNeck &pair : necks)
-      neck = std::fmin(neck, pair.radius);
+      if (pair.contact)
+        neck = std::fmin(neck, pair.radius);
     return neck;
   }
 
@@ -353,17 +380,23 @@ namespace levelsinter::neck_measures
   smallest_neck_radius(const LevelSetField<dim>               &level_set,
                        const std::vector<std::vector<double>> &particles)
   {
-    return smallest_neck_radius(pair_necks(level_set, particles));
+    std::vector<PairNeck> contacts = neighbour_pairs(particles, 0);
+    measure_necks(level_set, particles, contacts);
+    return smallest_neck_radius(contacts);
   }
 
   template double
   neck_radius(const LevelSetField<2> &, const Point<2> &, const Point<2> &);
   template double
   neck_radius(const LevelSetField<3> &, const Point<3> &, const Point<3> &);
-  template std::vector<PairNeck>
-  pair_necks(const LevelSetField<2> &, const std::vector<std::vector<double>> &);
-  template std::vector<PairNeck>
-  pair_necks(const LevelSetField<3> &, const std::vector<std::vector<double>> &);
+  template void
+  measure_necks(const LevelSetField<2> &,
+                const std::vector<std::vector<double>> &,
+                std::vector<PairNeck> &);
+  template void
+  measure_necks(const LevelSetField<3> &,
+                const std::vector<std::vector<double>> &,
+                std::vector<PairNeck> &);
   template double
   smallest_neck_radius(const LevelSetField<2> &,
                        const std::vector<std::vector<double>> &);

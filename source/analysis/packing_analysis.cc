@@ -33,6 +33,7 @@ namespace levelsinter
     : particles(scene.geometry.particles_are_bodies() ?
                   scene.geometry.particles :
                   std::vector<std::vector<double>>())
+    , power_cells(particles)
     , symmetry_boundaries(scene.domain.symmetry_planes)
     , comm(comm)
     , directory(scene.output.directory)
@@ -80,7 +81,10 @@ namespace levelsinter
     for (unsigned int d = 0; d < dim && centres.size() >= 2; ++d)
       if (spread(centres, d) > 0)
         shrinkage_axes.push_back(d);
-
+    // Near misses: a gap below one cell of the band, where the interface
+    // is drawn, which the mesh may join or not; fixed by the scene, so the
+    // pairs are the same at every measure() and after a restart.
+    pairs = neck_measures::neighbour_pairs(particles, scene.band_cell_size());
   }
 
   template <int dim>
@@ -93,8 +97,9 @@ namespace levelsinter
     };
     necks_log = std::make_unique<MetricsLog>(
       directory + "/necks.csv",
-      std::vector<std::string>{"step", "time", "particle_i", "particle_j",
-                               "neck_radius"},
+      std::vector<std::string>{
+        "step", "time", "particle_i", "particle_j", "contact", "neck_radius",
+        "gap"},
       comm,
       kept(0));
     std::vector<std::string> pore_columns = {
@@ -126,7 +131,10 @@ namespace levelsinter
                                       "neck_mean",
                                       "neck_max",
                                       "contacts",
-                                      "coordination_number"};
+                                      "coordination_number",
+                                      "near_misses",
+                                      "near_misses_joined",
+                                      "near_miss_gap_min"};
     if (has_interior)
       names.push_back("interior_coordination_number");
     for (const unsigned int d : shrinkage_axes)
@@ -160,21 +168,11 @@ namespace levelsinter
       if (window.point_inside(cell->center()))
         result.window_solid += cell_solid;
       // Cells are small against particles: the cell centre decides.
-      unsigned int nearest = 0;
-      double       power   = std::numeric_limits<double>::max();
-      for (unsigned int i = 0; i < n; ++i)
-        if (const double p =
-              cell->center().distance_square(centres[i]) -
-              particles[i][dim] * particles[i][dim];
-            p < power)
-          {
-            power   = p;
-            nearest = i;
-          }
       if (n > 0)
         {
-          volume[nearest] += cell_solid;
-          moment[nearest] += cell_moment;
+          const unsigned int owner = power_cells.owner(cell->center());
+          volume[owner] += cell_solid;
+          moment[owner] += cell_moment;
         }
     };
     interface_measures::integrate_regions(level_set, integrands);
@@ -230,13 +228,19 @@ namespace levelsinter
     const double closed_porosity =
       solid.window_volume > 0 ? closed_in_window / solid.window_volume : nan;
 
-    last_necks        = neck_measures::pair_necks(level_set, particles);
-    const auto &necks = last_necks;
-    double       neck_min = nan, neck_max = nan, neck_sum = 0;
-    unsigned int contacts = 0;
+    neck_measures::measure_necks(level_set, particles, pairs);
+    const auto  &necks    = pairs;
+    double       neck_min = nan, neck_max = nan, neck_sum = 0, gap_min = nan;
+    unsigned int contacts = 0, near_misses = 0, joined = 0;
     std::vector<unsigned int> coordination(particles.size(), 0);
     for (const auto &neck : necks)
-      if (neck.radius > 0)
+      if (!neck.contact)
+        {
+          ++near_misses;
+          joined += neck.radius > 0;
+          gap_min = std::fmin(gap_min, neck.gap);
+        }
+      else if (neck.radius > 0)
         {
           neck_min = std::fmin(neck_min, neck.radius);
           neck_max = std::fmax(neck_max, neck.radius);
@@ -264,7 +268,10 @@ namespace levelsinter
       contacts > 0 ? neck_sum / contacts : nan,
       neck_max,
       double(contacts),
-      particles.empty() ? nan : 2. * contacts / particles.size()};
+      particles.empty() ? nan : 2. * contacts / particles.size(),
+      double(near_misses),
+      double(joined),
+      gap_min};
     if (has_interior)
       row.push_back(double(interior_contacts) / interior_count);
     if (initial_spread.empty())
@@ -279,8 +286,13 @@ namespace levelsinter
         if (!necks_log)
           open_logs();
         for (const auto &neck : necks)
-          necks_log->add_row(
-            {double(step), t, double(neck.i), double(neck.j), neck.radius});
+          necks_log->add_row({double(step),
+                              t,
+                              double(neck.i),
+                              double(neck.j),
+                              double(neck.contact),
+                              neck.radius,
+                              neck.gap});
         for (unsigned int p = 0; p < pores.size(); ++p)
           {
             std::vector<double> values = {double(step),

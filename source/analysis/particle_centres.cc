@@ -11,17 +11,10 @@ namespace levelsinter
     const std::vector<std::vector<double>> &particles,
     const DomainParameters                 &domain,
     const MPI_Comm                          comm)
-    : tolerance(0)
+    : power_cells(particles)
+    , tolerance(0)
     , comm(comm)
   {
-    for (const auto &p : particles)
-      {
-        Point<dim> c;
-        for (unsigned int d = 0; d < dim; ++d)
-          c[d] = p[d];
-        centres.push_back(c);
-        squared_radii.push_back(p[dim] * p[dim]);
-      }
     for (const types::boundary_id id : domain.symmetry_planes)
       planes.emplace_back(id / 2,
                           id % 2 ? domain.upper_corner[id / 2] :
@@ -33,51 +26,22 @@ namespace levelsinter
   }
 
   template <int dim>
-  void
-  ParticleCentres<dim>::candidates(const Point<dim>          &x,
-                                   const double               rho,
-                                   std::vector<unsigned int> &result) const
-  {
-    result.clear();
-    unsigned int best  = 0;
-    double       power = std::numeric_limits<double>::max();
-    for (unsigned int i = 0; i < centres.size(); ++i)
-      if (const double p = x.distance_square(centres[i]) - squared_radii[i];
-          p < power)
-        {
-          power = p;
-          best  = i;
-        }
-    result.push_back(best);
-    // p_j - p_best is affine with gradient 2 (c_best - c_j): within rho of
-    // x it drops at most 2 |c_j - c_best| rho below its value at x.
-    for (unsigned int j = 0; j < centres.size(); ++j)
-      if (j != best &&
-          x.distance_square(centres[j]) - squared_radii[j] - power <=
-            2 * centres[j].distance(centres[best]) * rho)
-        result.push_back(j);
-  }
-
-  template <int dim>
   std::vector<Point<dim>>
   ParticleCentres<dim>::centroids(const LevelSetField<dim> &level_set) const
   {
-    const unsigned int        n = centres.size();
+    const auto               &centres = power_cells.centres();
+    const unsigned int        n       = centres.size();
     std::vector<double>       volume(n, 0.);
     std::vector<double>       moment(n * dim, 0.);
     std::vector<unsigned int> near;
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.solid_flags = update_JxW_values | update_quadrature_points;
     integrands.on_solid    = [&](const auto &cell, const auto &values) {
-      candidates(cell->center(), cell->diameter() / 2, near);
+      power_cells.candidates(cell->center(), cell->diameter() / 2, near);
       for (const unsigned int q : values.quadrature_point_indices())
         {
-          const Point<dim> &x     = values.quadrature_point(q);
-          unsigned int      owner = near[0];
-          for (unsigned int k = 1; k < near.size(); ++k)
-            if (x.distance_square(centres[near[k]]) - squared_radii[near[k]] <
-                x.distance_square(centres[owner]) - squared_radii[owner])
-              owner = near[k];
+          const Point<dim>  &x     = values.quadrature_point(q);
+          const unsigned int owner = power_cells.owner(x, near);
           const double JxW = level_set.measure().JxW(values, q);
           volume[owner] += JxW;
           for (unsigned int d = 0; d < dim; ++d)
@@ -128,7 +92,7 @@ namespace levelsinter
   std::vector<std::string>
   ParticleCentres<dim>::column_names() const
   {
-    if (centres.size() == 2)
+    if (power_cells.centres().size() == 2)
       return {"centre_distance", "centre_distance_change"};
     return {"centre_distance_change_mean"};
   }
@@ -146,13 +110,13 @@ namespace levelsinter
       const double d0 = initial[i].distance(initial[j]);
       return (now[i].distance(now[j]) - d0) / d0;
     };
-    if (centres.size() == 2)
+    if (now.size() == 2)
       return {now[0].distance(now[1]), change(0, 1)};
     double       sum      = 0;
     unsigned int contacts = 0;
     for (const auto &neck : necks)
       if (const double c = change(neck.i, neck.j);
-          neck.radius > 0 && std::isfinite(c))
+          neck.contact && neck.radius > 0 && std::isfinite(c))
         {
           sum += c;
           ++contacts;

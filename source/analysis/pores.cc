@@ -20,6 +20,8 @@ namespace levelsinter
   double
   Pore<dim>::sphericity() const
   {
+    if (on_box)
+      return std::numeric_limits<double>::quiet_NaN();
     if (area <= 0)
       return 0;
     return dim == 3 ? 36 * M_PI * volume * volume / (area * area * area) :
@@ -71,14 +73,19 @@ namespace levelsinter
     {
       double             volume = 0, area = 0, volume_in_window = 0;
       Tensor<1, dim>     first_moment;
-      bool               open = false;
-      static constexpr unsigned int size = 5 + dim;
+      bool               open = false, on_box = false;
+      static constexpr unsigned int size = 6 + dim;
 
       void
       pack(std::vector<double> &out, const double label) const
       {
         out.insert(out.end(),
-                   {label, volume, area, volume_in_window, double(open)});
+                   {label,
+                    volume,
+                    area,
+                    volume_in_window,
+                    double(open),
+                    double(on_box)});
         for (unsigned int d = 0; d < dim; ++d)
           out.push_back(first_moment[d]);
       }
@@ -89,9 +96,10 @@ namespace levelsinter
         volume += in[1];
         area += in[2];
         volume_in_window += in[3];
-        open = open || in[4] > 0;
+        open   = open || in[4] > 0;
+        on_box = on_box || in[5] > 0;
         for (unsigned int d = 0; d < dim; ++d)
-          first_moment[d] += in[5 + d];
+          first_moment[d] += in[6 + d];
       }
     };
   } // namespace
@@ -231,18 +239,25 @@ namespace levelsinter
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              std::find(symmetry_boundaries.begin(),
-                        symmetry_boundaries.end(),
-                        cell->face(f)->boundary_id()) ==
-                symmetry_boundaries.end())
-            for (const unsigned int v : cell->face(f)->vertex_indices())
-              {
-                const unsigned int k =
-                  relevant.index_within_set(cell->face(f)->vertex_dof_index(v, 0));
-                if (value[k] > 0)
-                  sums[label[sets.find(k)]].open = true;
-              }
+          if (cell->face(f)->at_boundary())
+            {
+              const bool symmetry =
+                std::find(symmetry_boundaries.begin(),
+                          symmetry_boundaries.end(),
+                          cell->face(f)->boundary_id()) !=
+                symmetry_boundaries.end();
+              for (const unsigned int v : cell->face(f)->vertex_indices())
+                {
+                  const unsigned int k = relevant.index_within_set(
+                    cell->face(f)->vertex_dof_index(v, 0));
+                  if (value[k] > 0)
+                    {
+                      auto &s = sums[label[sets.find(k)]];
+                      s.on_box = true;
+                      s.open   = s.open || !symmetry;
+                    }
+                }
+            }
 
     // 4. Gather the components of all ranks (few numbers per pore).
     std::vector<double> packed;
@@ -262,6 +277,7 @@ namespace levelsinter
           pore.volume_in_window = s.volume_in_window;
           pore.centroid         = Point<dim>(s.first_moment / s.volume);
           pore.open             = s.open;
+          pore.on_box           = s.on_box;
           pores.push_back(pore);
         }
     // An order independent of the partition: centroids compared after

@@ -222,13 +222,22 @@ namespace levelsinter
        {"hopper", Shape::hopper}});
     particles =
       parse_inline_particles(prm.get("Particles"), d, "Geometry/Particles");
+    particle_origins.clear();
+    for (unsigned int i = 0; i < particles.size(); ++i)
+      particle_origins.push_back("entry 'Geometry/Particles', item " +
+                                 std::to_string(i + 1));
     particle_file = prm.get("Particle file");
     if (!particle_file.empty())
       {
         if (particle_file.front() != '/' && !scene_directory.empty())
           particle_file = scene_directory + "/" + particle_file;
-        const auto from_file = read_particle_file(particle_file, d);
+        std::vector<unsigned int> lines;
+        const auto                from_file =
+          read_particle_file(particle_file, d, "particle", &lines);
         particles.insert(particles.end(), from_file.begin(), from_file.end());
+        for (const unsigned int line : lines)
+          particle_origins.push_back("particle file '" + particle_file +
+                                     "', line " + std::to_string(line));
       }
     pores = parse_inline_particles(prm.get("Pores"),
                                    d,
@@ -349,7 +358,6 @@ namespace levelsinter
       fail_entry("Geometry/Particles",
                  "the scene has no solid: give 'Particles', 'Particle file', "
                  "'Ellipses', 'Superellipses' or 'Implicit function'");
-    check_distinct_centres(particles);
     const auto &lo = domain.lower_corner, &hi = domain.upper_corner;
     check_particles_in_domain(particles, lo, hi);
     check_particles_in_domain(pores, lo, hi, "pore");

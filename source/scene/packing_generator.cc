@@ -377,6 +377,16 @@ namespace levelsinter
             // then differ by 5e-5 relative, far below the contact gap).
             if (gap < 1e-4)
               {
+                if (s.target_fraction > 0)
+                  throw std::runtime_error(
+                    "--fraction " + to_string(s.target_fraction) +
+                    ": not reached: the packing jammed at solid fraction " +
+                    to_string(phi_in) +
+                    " (as dense as it gets with these radii and walls, "
+                    "after " +
+                    std::to_string(it + 1) +
+                    " iterations); lower --fraction, or leave it out to "
+                    "write the jammed packing");
                 result.converged = true;
                 return s_in;
               }
@@ -926,7 +936,10 @@ namespace levelsinter
              "e.g. 0,0,0:1,1,1 (the unit box)\n"
              "  --domain LO:HI            the scene's box: check that the "
              "container and particles fit in it\n"
-             "  --fraction PHI            stop at this solid fraction\n"
+             "  --fraction PHI            stop at this solid fraction; an "
+             "error (nothing written) if the\n"
+             "                            packing jams below it, naming the "
+             "fraction reached\n"
              "  --dense                   as dense as it gets (the default)\n"
              "  --periodic                periodic container (default: "
              "hard walls)\n"
@@ -947,13 +960,16 @@ namespace levelsinter
              "(1000; larger is slower and denser)\n"
              "  --max-iterations K        (200000)\n"
              "  --seed S                  random seed (1)\n"
-             "  --output FILE             the CSV to write (required)\n"
+             "  --output FILE             the CSV to write (required); an "
+             "existing file is refused\n"
+             "  --overwrite               replace an existing --output file\n"
              "  --help\n";
     }
 
     Settings
     parse_arguments(const std::vector<std::string> &arguments,
-                    std::string                     &output_file)
+                    std::string                     &output_file,
+                    bool                            &overwrite)
     {
       Settings      s;
       std::string   region, domain, symmetry;
@@ -962,8 +978,10 @@ namespace levelsinter
       unsigned long dim = s.dim, n_particles = 0, max_iterations = s.max_iterations;
       bool          dense = false;
       std::vector<std::string> seen;
+      overwrite = false;
       const std::map<std::string, bool *> flags = {{"--periodic", &s.periodic},
-                                                   {"--dense", &dense}};
+                                                   {"--dense", &dense},
+                                                   {"--overwrite", &overwrite}};
       const std::map<std::string, double *> numbers = {
         {"--radius", &radius},
         {"--radius-min", &s.r_min},

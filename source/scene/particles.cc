@@ -79,9 +79,10 @@ namespace levelsinter
   }
 
   std::vector<std::vector<double>>
-  read_particle_file(const std::string &file_name,
-                     const unsigned int dim,
-                     const std::string &item_name)
+  read_particle_file(const std::string         &file_name,
+                     const unsigned int         dim,
+                     const std::string         &item_name,
+                     std::vector<unsigned int> *lines)
   {
     std::ifstream in(file_name);
     if (!in)
@@ -136,6 +137,8 @@ namespace levelsinter
         if (!error.empty())
           throw std::runtime_error(where() + error);
         particles.push_back(p);
+        if (lines)
+          lines->push_back(line_number);
       }
     if (particles.empty())
       throw std::runtime_error(item_name + " file '" + file_name +
@@ -144,28 +147,49 @@ namespace levelsinter
   }
 
   void
-  check_distinct_centres(const std::vector<std::vector<double>> &particles)
+  check_particle_pairs(const std::vector<std::vector<double>> &particles,
+                       const std::vector<std::string>         &origins,
+                       const double                            cell)
   {
+    const auto describe = [&](const unsigned int i) {
+      const auto        &p   = particles[i];
+      const unsigned int dim = p.size() - 1;
+      std::ostringstream text;
+      text << "particle " << i + 1 << " ("
+           << (i < origins.size() ? origins[i] + ": " : "") << "centre ";
+      for (unsigned int k = 0; k < dim; ++k)
+        text << (k ? ", " : "") << p[k];
+      text << ", radius " << p[dim] << ")";
+      return text.str();
+    };
     for (unsigned int i = 0; i < particles.size(); ++i)
       for (unsigned int j = i + 1; j < particles.size(); ++j)
         {
           const auto  &p = particles[i], &q = particles[j];
-          const auto   dim  = p.size() - 1;
-          const double tol  = 1e-12 * std::max(p[dim], q[dim]);
-          bool         same = true;
+          const auto   dim = p.size() - 1;
+          double       d2  = 0;
           for (unsigned int k = 0; k < dim; ++k)
-            same = same && std::abs(p[k] - q[k]) <= tol;
-          if (same)
-            {
-              std::ostringstream msg;
-              msg << "entry 'Geometry/Particles' (inline particles first, "
-                     "then the particle file's): particles "
-                  << i + 1 << " and " << j + 1 << " have the same centre (";
-              for (unsigned int k = 0; k < dim; ++k)
-                msg << (k ? ", " : "") << p[k];
-              msg << "); remove one of them";
-              throw std::runtime_error(msg.str());
-            }
+            d2 += (p[k] - q[k]) * (p[k] - q[k]);
+          const double d = std::sqrt(d2);
+          // The smaller one first: it is the one inside.
+          const bool         i_smaller = p[dim] <= q[dim];
+          const unsigned int small = i_smaller ? i : j, large = i_smaller ? j : i;
+          std::ostringstream msg;
+          if (d + particles[small][dim] <=
+              particles[large][dim] * (1 + 1e-12))
+            msg << describe(small) << " lies inside " << describe(large)
+                << ": a particle inside another has no surface of its own "
+                   "and no neck to sinter; remove it";
+          else if (d < cell)
+            msg << describe(i) << " and " << describe(j) << " have centres "
+                << d << " apart, less than one cell of the interface band ("
+                << cell
+                << "): the mesh shows them as one particle, with no neck "
+                   "or gap between them; remove one (a row given twice?) "
+                   "or move them apart";
+          else
+            continue;
+          throw std::runtime_error(msg.str());
         }
   }
 

@@ -1,5 +1,6 @@
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/renamed_entries.h>
+#include <levelsinter/scene/particles.h>
 #include <levelsinter/scene/scene_parameters.h>
 
 #include <unistd.h>
@@ -331,6 +332,11 @@ namespace levelsinter
                              "; the curvature refinement levels resolve it "
                              "near its interface only");
         }
+
+    // Particles inside others or closer than a band cell (particles.h).
+    check_particle_pairs(geometry.particles,
+                         geometry.particle_origins,
+                         h_band);
 
     // Refuse a mesh that cannot fit in memory before anything is written.
     const double cells  = estimated_initial_cells();

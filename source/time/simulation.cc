@@ -143,6 +143,10 @@ namespace levelsinter
       throw std::logic_error("Simulation<dim> built for the wrong dimension");
     for (const auto &warning : scene.warnings)
       pcout << "warning: " << warning << std::endl;
+    if (scene.geometry.particles_are_bodies() &&
+        scene.geometry.particles.size() >= 2)
+      particle_ids =
+        std::make_unique<ParticleIdField<dim>>(scene.geometry.particles);
   }
 
   template <int dim>
@@ -393,6 +397,8 @@ namespace levelsinter
   {
     for (const auto &mechanism : mechanisms)
       mechanism->add_output_fields(alpha, data_out);
+    if (particle_ids)
+      particle_ids->add_to(alpha, data_out);
   }
 
   template <int dim>

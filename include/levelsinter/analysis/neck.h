@@ -56,37 +56,61 @@ namespace levelsinter
                const Point<dim>         &c2,
                const double              spacing);
 
-    /** The neck between particles i and j (indices into the particle list). */
+    /**
+     * A pair of particles i < j (indices into the particle list) whose neck
+     * is measured. A contact is a pair whose balls overlap or touch at
+     * t = 0 (a gap of at most 1e-3 (r_i + r_j), the contact gap of
+     * levelsinter-pack, whose jammed packings leave their contacts that
+     * close), or the pair of a two-particle scene whatever its gap. A near
+     * miss is a pair with a larger gap at t = 0, but below a given
+     * distance (a cell): the mesh may join it or not, so it is reported
+     * apart from the contacts.
+     */
     struct PairNeck
     {
-      unsigned int i      = 0;
-      unsigned int j      = 0;
-      double       radius = 0;
+      unsigned int i       = 0;
+      unsigned int j       = 0;
+      bool         contact = true;
+      double       radius  = 0;
+      // Near misses: the gap along the line of the initial centres, between
+      // the points where the rays from each centre towards the other leave
+      // the solid; 0 once the level set joins the pair. NaN for contacts.
+      double gap = 0;
     };
 
     /**
-     * The necks of all pairs of particles (x, y[, z], r) that overlap, or of
-     * the pair if there are exactly two: neck_radius() for equal radii,
-     * narrowest_neck() otherwise, in the order of the pairs (i, j). A pair
-     * whose neck has pinched off (the point between the centres lies in
-     * the pore) has radius 0. All pairs share one RayCaster, and the
-     * searches advance together: about 20 reductions over the ranks in
-     * all, whatever the number of pairs.
+     * The contacts and the near misses (gap below @p near_miss_gap at
+     * t = 0) among @p particles (x, y[, z], r), in the order of the pairs
+     * (i, j), not yet measured.
      */
-    template <int dim>
     std::vector<PairNeck>
-    pair_necks(const LevelSetField<dim>               &level_set,
-               const std::vector<std::vector<double>> &particles);
+    neighbour_pairs(const std::vector<std::vector<double>> &particles,
+                    const double                            near_miss_gap);
 
     /**
-     * The smallest of the pair_necks(); NaN without a pair.
+     * Measures @p pairs of @p particles: neck_radius() for equal radii,
+     * narrowest_neck() otherwise, and the gap of the near misses. A pair
+     * whose neck has pinched off or never formed (the point between the
+     * centres lies in the pore) has radius 0. All pairs share one
+     * RayCaster, and the searches advance together: about 20 reductions
+     * over the ranks in all, whatever the number of pairs.
+     */
+    template <int dim>
+    void
+    measure_necks(const LevelSetField<dim>               &level_set,
+                  const std::vector<std::vector<double>> &particles,
+                  std::vector<PairNeck>                  &pairs);
+
+    /**
+     * The smallest neck radius of the contacts of @p particles (the
+     * metrics' neck_radius); NaN without a contact.
      */
     template <int dim>
     double
     smallest_neck_radius(const LevelSetField<dim>               &level_set,
                          const std::vector<std::vector<double>> &particles);
 
-    /** The smallest of @p necks (pair_necks() measured already); NaN if empty. */
+    /** The smallest radius of the contacts among @p necks; NaN if none. */
     double
     smallest_neck_radius(const std::vector<PairNeck> &necks);
 

@@ -4,6 +4,7 @@
 
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/pores.h>
+#include <levelsinter/analysis/power_cells.h>
 #include <levelsinter/io/metrics_log.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/scene_parameters.h>
@@ -19,7 +20,8 @@ namespace levelsinter
   /**
    * The state of a packing, measured every metrics interval: relative
    * density and porosity in a control volume, the closed pores, the neck of
-   * every overlapping pair, the coordination number and the shrinkage
+   * every contact (neck_measures::PairNeck), the near misses, the
+   * coordination number and the shrinkage
    * (doc/user_guide.md, "Packing metrics", names the columns). Writes
    * necks.csv, pores.csv and pore_events.csv in the output directory (none
    * if the directory is empty), opened at the first measure().
@@ -49,7 +51,7 @@ namespace levelsinter
     const std::vector<neck_measures::PairNeck> &
     necks() const
     {
-      return last_necks;
+      return pairs;
     }
 
     /**
@@ -90,6 +92,7 @@ namespace levelsinter
     open_logs();
 
     std::vector<std::vector<double>>    particles;
+    PowerCells<dim>                     power_cells;
     std::vector<Point<dim>>             centres;
     std::vector<types::boundary_id>     symmetry_boundaries;
     BoundingBox<dim>                    window;
@@ -105,6 +108,7 @@ namespace levelsinter
     std::unique_ptr<MetricsLog>         events_log;
     std::optional<std::array<unsigned int, 3>> kept_rows;
     std::vector<Pore<dim>>              last_pores;
-    std::vector<neck_measures::PairNeck> last_necks;
+    // The contacts and near misses, measured by the last measure().
+    std::vector<neck_measures::PairNeck> pairs;
   };
 } // namespace levelsinter

@@ -6,6 +6,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <levelsinter/analysis/neck.h>
+#include <levelsinter/analysis/power_cells.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/domain_parameters.h>
 
@@ -56,7 +57,7 @@ namespace levelsinter
      * The centroid distance of the pair and its change relative to the
      * distance at the first call, (d - d_0) / d_0 (negative: the centres
      * approach); for more than two particles the mean of that change over
-     * the pairs of @p necks with a positive neck radius (the contacts).
+     * the contacts of @p necks with a positive neck radius.
      */
     std::vector<double>
     measure(const LevelSetField<dim>                   &level_set,
@@ -71,15 +72,7 @@ namespace levelsinter
     }
 
   private:
-    // Particles whose power may be smallest somewhere in the ball of
-    // radius rho about x; the smallest at x comes first.
-    void
-    candidates(const Point<dim>          &x,
-               const double               rho,
-               std::vector<unsigned int> &result) const;
-
-    std::vector<Point<dim>>                      centres;
-    std::vector<double>                          squared_radii;
+    PowerCells<dim>                              power_cells;
     // (axis, coordinate) of each symmetry plane.
     std::vector<std::pair<unsigned int, double>> planes;
     double                                       tolerance;

@@ -23,8 +23,16 @@ namespace levelsinter
     Point<dim> centroid;
     // Touches a box face that is not a symmetry plane.
     bool open = false;
+    // Touches any box face, symmetry planes included: volume and area are
+    // those of the part in the box. Not serialised: the tracker does not
+    // use it.
+    bool on_box = false;
 
-    /** 36 pi V^2 / S^3 in 3D, 4 pi A / P^2 in 2D: 1 for a ball. */
+    /**
+     * 36 pi V^2 / S^3 in 3D, 4 pi A / P^2 in 2D: 1 for a ball. NaN for a
+     * pore on the box (open, or cut by a symmetry plane): the box faces
+     * are not part of its surface, so the ratio would describe no shape.
+     */
     double
     sphericity() const;
 

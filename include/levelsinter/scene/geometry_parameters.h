@@ -55,6 +55,9 @@ namespace levelsinter
     // Inline particles and the particle file are merged: x, y[, z], r.
     std::vector<std::vector<double>> particles;
     std::string                      particle_file;
+    // Where each particle was given, for errors: "entry
+    // 'Geometry/Particles', item 2" or "particle file 'F', line 14".
+    std::vector<std::string> particle_origins;
     // The solid of Shape = particles is the union of the particles, the
     // superellipses and the implicit function's solid, minus the pores and
     // elliptic pores.

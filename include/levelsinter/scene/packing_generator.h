@@ -50,7 +50,8 @@ namespace levelsinter
       // the mirror images of the others instead of a wall. At most one per
       // axis, and none in a periodic box. symmetry_upper[d] says which face.
       std::vector<bool> symmetry, symmetry_upper;
-      // Solid fraction to stop at; 0 = as dense as the algorithm gets.
+      // Solid fraction to stop at (an error if the packing jams below it);
+      // 0 = as dense as the algorithm gets.
       double target_fraction = 0;
       // Neck x0/R on the contacting pairs; 0 leaves them nearly tangent.
       double neck_ratio = 0;
@@ -113,10 +114,14 @@ namespace levelsinter
     double
     neck_ratio(const double distance, const double r1, const double r2);
 
-    /** Settings from "--name value" arguments; see usage(). */
+    /**
+     * Settings from "--name value" arguments; see usage(). @p overwrite:
+     * whether --overwrite allows replacing an existing output file.
+     */
     Settings
     parse_arguments(const std::vector<std::string> &arguments,
-                    std::string                     &output_file);
+                    std::string                     &output_file,
+                    bool                            &overwrite);
 
     std::string
     usage();

@@ -24,18 +24,32 @@ namespace levelsinter
    * skipped. A header that does not name exactly these columns is an error
    * naming the file and line.
    */
+  /** @p lines, if given, receives the line number of each row read. */
   std::vector<std::vector<double>>
-  read_particle_file(const std::string &file_name,
-                     const unsigned int dim,
-                     const std::string &item_name = "particle");
+  read_particle_file(const std::string         &file_name,
+                     const unsigned int         dim,
+                     const std::string         &item_name = "particle",
+                     std::vector<unsigned int> *lines     = nullptr);
 
   /**
-   * Two particles with the same centre (to 1e-12 of the larger radius)
-   * are an error naming both: one hides the other, or the list was pasted
-   * twice.
+   * Pairs that cannot be a sintering problem are an error naming both
+   * particles (numbered from 1 in the merged list) and where each was
+   * given (@p origins, one per particle):
+   * - one inside the other (centre distance + its radius <= the other's
+   *   radius, which includes the same ball twice): it has no surface of
+   *   its own, and a neck measured between them would be a cross-section
+   *   of the larger one;
+   * - centres closer than @p cell (one cell of the interface band): the
+   *   two balls differ from one by less than a cell, so the mesh shows
+   *   one particle with no neck or gap between them, and their power
+   *   cells split one body in two. It is refused rather than warned about
+   *   because nothing the run measures about the pair would mean anything,
+   *   and it is nearly always a row given twice.
    */
   void
-  check_distinct_centres(const std::vector<std::vector<double>> &particles);
+  check_particle_pairs(const std::vector<std::vector<double>> &particles,
+                       const std::vector<std::string>         &origins,
+                       const double                            cell);
 
   /**
    * A particle may stick out of the box only through a face it is symmetric

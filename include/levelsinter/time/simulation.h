@@ -5,6 +5,7 @@
 
 #include <deal.II/distributed/tria.h>
 
+#include <levelsinter/analysis/particle_id_field.h>
 #include <levelsinter/analysis/postprocessor.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
@@ -134,9 +135,9 @@ namespace levelsinter
     }
 
     /**
-     * Add the mechanisms' fields (Mechanism::add_output_fields()) to
-     * @p data_out: what the field output writes besides alpha and the
-     * velocity, for tests that read them without files.
+     * Add the mechanisms' fields (Mechanism::add_output_fields()) and
+     * particle_id to @p data_out: what the field output writes besides
+     * alpha and the velocity, for tests that read them without files.
      */
     void
     add_output_fields(DataOut<dim> &data_out) const;
@@ -225,6 +226,8 @@ namespace levelsinter
     const StepInterval                        field_interval;
     const StepInterval                        progress_interval;
     const StepInterval                        checkpoint_interval;
+    // The particle_id output field of a scene of two or more particles.
+    std::unique_ptr<ParticleIdField<dim>>     particle_ids;
     FieldOutput<dim>                          field_output;
     double                                    h_min;
     double                                    interface_speed = 0;
