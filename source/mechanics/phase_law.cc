@@ -74,23 +74,24 @@ namespace levelsinter
   template <int dim>
   std::unique_ptr<PhaseLaw<dim>>
   make_phase_law(const PhaseLawParameters    &law,
-                 const ViscousFlowParameters &flow)
+                 const ViscousFlowParameters &flow,
+                 const MaterialsParameters   &materials)
   {
     if (law.law == PhaseLawParameters::Law::elastic_solid)
       return std::make_unique<ElasticSolidFluid<dim>>(law.shear_modulus,
                                                       law.bulk_modulus,
-                                                      flow.fluid_viscosity,
-                                                      flow.fluid_compressibility);
+                                                      materials.fluid_viscosity,
+                                                      materials.fluid_compressibility);
     if (law.is_viscoelastic())
       return std::make_unique<ViscoelasticPhases<dim>>(
         flow.solid_viscosity,
         law.polymer_viscosity,
         law.relaxation_time,
-        flow.fluid_viscosity,
-        flow.fluid_compressibility);
+        materials.fluid_viscosity,
+        materials.fluid_compressibility);
     return std::make_unique<NewtonianPhases<dim>>(flow.solid_viscosity,
-                                                  flow.fluid_viscosity,
-                                                  flow.fluid_compressibility);
+                                                  materials.fluid_viscosity,
+                                                  materials.fluid_compressibility);
   }
 
   template class ElasticSolidFluid<2>;
@@ -98,7 +99,11 @@ namespace levelsinter
   template class ViscoelasticPhases<2>;
   template class ViscoelasticPhases<3>;
   template std::unique_ptr<PhaseLaw<2>>
-  make_phase_law(const PhaseLawParameters &, const ViscousFlowParameters &);
+  make_phase_law(const PhaseLawParameters &,
+                 const ViscousFlowParameters &,
+                 const MaterialsParameters &);
   template std::unique_ptr<PhaseLaw<3>>
-  make_phase_law(const PhaseLawParameters &, const ViscousFlowParameters &);
+  make_phase_law(const PhaseLawParameters &,
+                 const ViscousFlowParameters &,
+                 const MaterialsParameters &);
 } // namespace levelsinter

@@ -23,26 +23,26 @@ namespace levelsinter
   template <int dim>
   ViscousFlow<dim>::ViscousFlow(
     const ViscousFlowParameters           &parameters,
+    const MaterialsParameters             &materials,
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
                                 const unsigned int           band_level,
                                 TimerOutput                 &timer,
                                 const PhaseLawParameters    &law)
     : parameters(parameters)
+    , materials(materials)
     , symmetry_planes(symmetry_planes)
     , filter(filter)
     , band_level(band_level)
     , timer(timer)
-    , phases(make_phase_law<dim>(law, parameters))
+    , phases(make_phase_law<dim>(law, parameters, materials))
     , zero_shear_viscosity(parameters.solid_viscosity +
                            (law.is_viscoelastic() ? law.polymer_viscosity : 0))
     , relaxation_time(law.is_viscoelastic() ? law.relaxation_time : 0)
   {
+    // SceneParameters refuses the elastic solid with viscous flow.
     if (phases->has_history())
-      throw std::runtime_error(
-        "entry 'Phase law/Law': viscous flow moves the particles with "
-        "their Newtonian velocity and needs 'newtonian' (the elastic solid "
-        "belongs to volume diffusion)");
+      throw std::logic_error("viscous flow with a phase law with history");
     if (phases->has_polymer_stress())
       conformation_model =
         std::make_unique<ConformationModel>(conformation_parameters(law));
@@ -57,6 +57,7 @@ namespace levelsinter
     step_start_time = -1;
     const auto settings =
       TwoPhaseStokes<dim>::Settings::from(parameters,
+                                          materials,
                                           symmetry_planes,
                                           band_level);
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
@@ -149,7 +150,7 @@ namespace levelsinter
                                  const double        dt,
                                  VelocityField<dim> &velocity)
   {
-    if (dt > 0 && parameters.surface_tension > 0 &&
+    if (dt > 0 && materials.surface_tension > 0 &&
         parameters.external_pressure == 0 && t != step_start_time)
       {
         measures_at_step_start = interface_measures::volume_and_area(alpha);
@@ -425,11 +426,11 @@ namespace levelsinter
   ViscousFlow<dim>::time_step_limit(const LevelSetField<dim> &) const
   {
     if (parameters.capillary_time_step_factor == 0 ||
-        parameters.surface_tension == 0 ||
+        materials.surface_tension == 0 ||
         parameters.semi_implicit_surface_tension)
       return std::numeric_limits<double>::infinity();
     const double a = parameters.capillary_time_step_factor * h_min /
-                     parameters.surface_tension;
+                     materials.surface_tension;
     if (relaxation_time == 0)
       return a * zero_shear_viscosity;
     // A viscoelastic melt resists a step dt with the viscosity of its

@@ -128,6 +128,7 @@ namespace levelsinter
   {
     if (scene.dimension != dim)
       throw std::logic_error("Simulation<dim> built for the wrong dimension");
+    first_time = scene.time.start_time;
     for (const auto &warning : scene.warnings)
       pcout << "warning: " << warning << std::endl;
   }
@@ -731,7 +732,10 @@ namespace levelsinter
           << h_min << "; mechanisms: ";
     for (unsigned int i = 0; i < mechanisms.size(); ++i)
       pcout << (i > 0 ? ", " : "") << mechanisms[i]->name();
-    pcout << (mechanisms.empty() ? "none" : "") << std::endl;
+    pcout << (mechanisms.empty() ? "none (nothing moves the interface: each "
+                                   "step only reinitialises the level set)" :
+                                   "")
+          << std::endl;
 
     double       t    = first_time;
     unsigned int step = first_step;
@@ -739,7 +743,7 @@ namespace levelsinter
       {
         check_curvature_resolution(t);
         compute_interface_velocity(t, 0);
-        record(step, t, 0, scene.time.end_time == 0);
+        record(step, t, 0, scene.time.end_time == scene.time.start_time);
       }
     else
       pcout << "resumed at step " << step << ", t = " << t << std::endl;

@@ -3,6 +3,7 @@
 #include <deal.II/base/symmetric_tensor.h>
 
 #include <levelsinter/mechanics/conformation_model.h>
+#include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -270,11 +271,12 @@ namespace levelsinter
   conformation_parameters(const PhaseLawParameters &law);
 
   /**
-   * The law a scene asks for ('Phase law/Law'), with the atmosphere of
-   * 'Viscous flow'.
+   * The law a scene asks for ('Phase law/Law'), with the particles'
+   * viscosity of 'Viscous flow' and the atmosphere of 'Materials'.
    */
   template <int dim>
   std::unique_ptr<PhaseLaw<dim>>
   make_phase_law(const PhaseLawParameters    &law,
-                 const ViscousFlowParameters &flow);
+                 const ViscousFlowParameters &flow,
+                 const MaterialsParameters   &materials);
 } // namespace levelsinter

@@ -17,6 +17,7 @@
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/conformation_field.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <vector>
@@ -95,6 +96,7 @@ namespace levelsinter
        * @p band_level. */
       static Settings
       from(const ViscousFlowParameters           &parameters,
+           const MaterialsParameters             &materials,
            const std::vector<types::boundary_id> &symmetry_planes,
            const unsigned int                     band_level);
     };
