@@ -138,3 +138,21 @@ bad_input_test(volume_diffusion_without_atmosphere
   "entry 'Materials/Fluid viscosity': must be positive with volume diffusion"
   --set "Materials/Fluid viscosity=0"
   ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_volume_diffusion_2d.prm)
+
+# --- Every shipped scene starts without an unexplained warning (issue 29) --
+# Each scene for 0 steps (scene_start.cmake): a warning must say what it
+# costs. The packings are left out (their start is checked by hand, 27 Nov
+# 2026): packing_27_coupled_3d alone took 541 s wall, 117 s CPU and 2.8 GB
+# at t = 0 (the elastic solve), and transport_benchmark_3d builds 1.4 M
+# DoFs; the others start in 0.6-7 s CPU.
+file(GLOB SHIPPED_SCENES ${CMAKE_SOURCE_DIR}/parameter_files/*.prm)
+foreach(scene ${SHIPPED_SCENES})
+  get_filename_component(name ${scene} NAME_WE)
+  if(name MATCHES "packing|transport_benchmark")
+    continue()
+  endif()
+  add_test(NAME scene_start_${name} COMMAND ${CMAKE_COMMAND}
+    -DLEVELSINTER=$<TARGET_FILE:levelsinter> -DSCENE=${scene}
+    -DWORK=${CMAKE_CURRENT_BINARY_DIR}/scene_start/${name}
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/scene_start.cmake)
+endforeach()
