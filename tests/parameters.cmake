@@ -109,7 +109,8 @@ set_tests_properties(parameters_no_mechanism PROPERTIES
 # Viscous flow with surface diffusion: the velocities add, with a warning;
 # in the reduced time of surface diffusion the flow is refused.
 add_test(NAME parameters_viscous_and_surface_diffusion COMMAND levelsinter
-  --set "Surface diffusion/Enabled=true" --set "Time/End time=0"
+  --set "Surface diffusion/Enabled=true"
+  --set "Surface diffusion/Coefficient=1e-6" --set "Time/End time=0"
   --set "Output/Field formats=none" --overwrite
   --set "Output/Directory=parameters_viscous_and_surface_diffusion"
   ${CYLINDERS})
@@ -118,7 +119,9 @@ set_tests_properties(parameters_viscous_and_surface_diffusion PROPERTIES
   "warning: viscous flow and surface diffusion are both enabled: the interface moves with the sum.*mechanisms: viscous flow, surface diffusion")
 bad_input_test(viscous_reduced_time "entry 'Surface diffusion/Time unit': cannot be 'reduced' with viscous flow"
   --set "Surface diffusion/Enabled=true"
-  --set "Surface diffusion/Time unit=reduced" ${CYLINDERS})
+  --set "Surface diffusion/Coefficient=1e-6"
+  --set "Surface diffusion/Time unit=reduced"
+  --set "Surface diffusion/Reference radius=0.25" ${CYLINDERS})
 
 # --- Materials (issue 29) --------------------------------------------------
 # The surface tension and the atmosphere moved from Viscous flow to

@@ -287,6 +287,7 @@ namespace
           const double R     = scene.geometry.particles[0][dim];
 
           ViscousFlow<dim>   flow(scene.viscous_flow,
+                                scene.materials,
                                 scene.domain.symmetry_planes,
                                 simulation.filter(),
                                 scene.refinement.max_level,

@@ -244,6 +244,44 @@ namespace levelsinter
         warnings.push_back(what.str());
       }
 
+    // Volume diffusion moves the interface with -C_v (grad p . n) n of the
+    // elastic solid's pressure (Algorithm 3): the particles do not flow.
+    if (volume_diffusion.enabled)
+      {
+        if (viscous_flow.enabled)
+          fail_entry("Volume diffusion/Enabled",
+                     "cannot be combined with 'Viscous flow/Enabled = "
+                     "true': volume diffusion solves the elastic-solid "
+                     "problem itself and moves the interface by diffusion "
+                     "only");
+        if (phase_law.law != PhaseLawParameters::Law::elastic_solid)
+          fail_entry("Phase law/Law",
+                     "must be 'elastic-solid' with volume diffusion: the "
+                     "pressure that drives it is that of the elastic "
+                     "particles (paper Eq. 92-94)");
+        if (!(materials.surface_tension > 0))
+          fail_entry("Materials/Surface tension",
+                     "must be positive with volume diffusion: it is the "
+                     "surface energy gamma that loads the elastic solid");
+        if (!(materials.fluid_viscosity > 0))
+          fail_entry("Materials/Fluid viscosity",
+                     "must be positive with volume diffusion: the "
+                     "atmosphere around the elastic solid is a fluid");
+        // Surface and volume diffusion together (Eq. 118, Algorithm 4) run
+        // in one time: seconds, or the one reduced time a section names.
+        if (surface_diffusion.enabled &&
+            surface_diffusion.time_unit ==
+              SurfaceDiffusion::TimeUnit::reduced &&
+            volume_diffusion.time_unit ==
+              VolumeDiffusionParameters::TimeUnit::reduced)
+          fail_entry("Volume diffusion/Time unit",
+                     "cannot be 'reduced' when 'Surface diffusion/Time "
+                     "unit' is too: a scene has one time, t* = C_s t / "
+                     "R^4 or C_v gamma t / R^3; set one of the two to "
+                     "seconds (its coefficient is then converted to the "
+                     "other's t*)");
+      }
+
     if (viscous_flow.enabled)
       {
         // The particles move with the Stokes velocity: a phase law with
@@ -281,44 +319,6 @@ namespace levelsinter
             "surface-diffusion velocity C_s (Laplace-Beltrami of kappa) n, "
             "each computed as if alone (doc/user_guide.md, \"Combining "
             "mechanisms\")");
-      }
-
-    // Volume diffusion moves the interface with -C_v (grad p . n) n of the
-    // elastic solid's pressure (Algorithm 3): the particles do not flow.
-    if (volume_diffusion.enabled)
-      {
-        if (viscous_flow.enabled)
-          fail_entry("Volume diffusion/Enabled",
-                     "cannot be combined with 'Viscous flow/Enabled = "
-                     "true': volume diffusion solves the elastic-solid "
-                     "problem itself and moves the interface by diffusion "
-                     "only");
-        if (phase_law.law != PhaseLawParameters::Law::elastic_solid)
-          fail_entry("Phase law/Law",
-                     "must be 'elastic-solid' with volume diffusion: the "
-                     "pressure that drives it is that of the elastic "
-                     "particles (paper Eq. 92-94)");
-        if (!(materials.surface_tension > 0))
-          fail_entry("Materials/Surface tension",
-                     "must be positive with volume diffusion: it is the "
-                     "surface energy gamma that loads the elastic solid");
-        if (!(materials.fluid_viscosity > 0))
-          fail_entry("Materials/Fluid viscosity",
-                     "must be positive with volume diffusion: the "
-                     "atmosphere around the elastic solid is a fluid");
-        // Surface and volume diffusion together (Eq. 118, Algorithm 4) run
-        // in one time: seconds, or the one reduced time a section names.
-        if (surface_diffusion.enabled &&
-            surface_diffusion.time_unit ==
-              SurfaceDiffusion::TimeUnit::reduced &&
-            volume_diffusion.time_unit ==
-              VolumeDiffusionParameters::TimeUnit::reduced)
-          fail_entry("Volume diffusion/Time unit",
-                     "cannot be 'reduced' when 'Surface diffusion/Time "
-                     "unit' is too: a scene has one time, t* = C_s t / "
-                     "R^4 or C_v gamma t / R^3; set one of the two to "
-                     "seconds (its coefficient is then converted to the "
-                     "other's t*)");
       }
 
     // An axisymmetric scene has the hoop terms in the viscous-flow forms
