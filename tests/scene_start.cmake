@@ -15,7 +15,7 @@ execute_process(COMMAND ${LAUNCH} ${LEVELSINTER} --overwrite
 if(NOT code EQUAL 0)
   message(FATAL_ERROR "exit code ${code}:\n${out}\n${err}")
 endif()
-string(REGEX REPLACE "warning:[^\n]*measured[^\n]*" "" rest "${out}${err}")
+string(REGEX REPLACE "warning:[^\n]*[Mm]easured[^\n]*" "" rest "${out}${err}")
 string(FIND "${rest}" "warning:" found)
 if(NOT found EQUAL -1)
   message(FATAL_ERROR "a warning without its cost:\n${out}\n${err}")
