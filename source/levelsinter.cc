@@ -87,8 +87,10 @@ namespace
         }
       catch (const std::runtime_error &e)
         {
-          // Building the mechanisms checks their entries, e.g. an
-          // expression.
+          // The scene's values were checked when it was read: an input
+          // error here would unwind through the timers, whose destructors
+          // print deal.II's "uncaught exception" block first. What is left
+          // (e.g. a file that vanished since) still names its source.
           throw std::runtime_error(with_source(e.what(),
                                                command_line.scene_file,
                                                command_line.overrides));

@@ -1,6 +1,7 @@
 # Run levelsinter on a bad input and check that it fails the documented way:
-# exit code != 0, a message on stderr containing EXPECT, and an existing
-# output directory left untouched.
+# exit code != 0, one plain line on stderr, "levelsinter: error: ...",
+# containing EXPECT (nothing before it: no library's dump, no raw bytes of
+# the input), and an existing output directory left untouched.
 #   cmake -DLEVELSINTER=... -DARGS="a;b" -DEXPECT="text" -DWORK=dir -P bad_input.cmake
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/out)
@@ -14,6 +15,11 @@ endif()
 string(FIND "${err}" "${EXPECT}" found)
 if(found EQUAL -1)
   message(FATAL_ERROR "stderr lacks '${EXPECT}':\n${err}")
+endif()
+# One line of printable text.
+if(NOT err MATCHES "^levelsinter: error: [ -~\t]*\n$")
+  message(FATAL_ERROR
+    "stderr is not one printable line 'levelsinter: error: ...':\n${err}")
 endif()
 file(READ ${WORK}/out/metrics.csv previous)
 if(NOT previous STREQUAL "previous run\n")

@@ -91,7 +91,7 @@ foreach(ratio 1e-3 1e-4 1e-5 1e-6 1e-7)
   set(eta "312e-${exponent}")
   add_test(NAME study_vd_ratio_${ratio}_2d
     COMMAND $<TARGET_FILE:levelsinter> --overwrite ${VD_FIXED_STEP}
-      --set "Time/End time=0.04" --set "Viscous flow/Fluid viscosity=${eta}"
+      --set "Time/End time=0.04" --set "Materials/Fluid viscosity=${eta}"
       --set "Output/Directory=vd_ratio_${ratio}" ${VD_GRAINS})
   set_tests_properties(study_vd_ratio_${ratio}_2d PROPERTIES
     LABELS validation-long)
@@ -111,7 +111,7 @@ foreach(ratio 1e-5 1e-7)
   add_test(NAME volume_diffusion_stiff_${ratio}_run
     COMMAND $<TARGET_FILE:levelsinter> --overwrite ${VD_FIXED_STEP}
       --set "Time/End time=0.012" --set "Output/Metrics interval=1"
-      --set "Viscous flow/Fluid viscosity=312e-${exponent}"
+      --set "Materials/Fluid viscosity=312e-${exponent}"
       --set "Output/Directory=vd_stiff_${ratio}" ${VD_GRAINS})
   set_tests_properties(volume_diffusion_stiff_${ratio}_run PROPERTIES
     FIXTURES_SETUP vd_stiff_${ratio})

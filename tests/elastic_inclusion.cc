@@ -167,27 +167,31 @@ namespace
           simulation.initialise();
           const auto  &alpha = simulation.level_set();
           const auto  &flow  = scene.viscous_flow;
+          const auto  &atmosphere = scene.materials;
           const double R     = scene.geometry.particles[0][dim];
           const double G = scene.phase_law.shear_modulus,
                        K = scene.phase_law.bulk_modulus;
           const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
           const double p_in =
-            dim == 2 ? 2. / 3 * (1 + nu) * flow.surface_tension / R :
-                       2 * flow.surface_tension / R;
-          const double dt = flow.fluid_viscosity / (G * ratio);
+            dim == 2 ? 2. / 3 * (1 + nu) * atmosphere.surface_tension / R :
+                       2 * atmosphere.surface_tension / R;
+          const double dt = atmosphere.fluid_viscosity / (G * ratio);
           const double h  = GridTools::minimal_cell_diameter(
                              simulation.triangulation()) /
                            std::sqrt(double(dim));
 
           ElasticSolidFluid<dim> law(G,
                                      K,
-                                     flow.fluid_viscosity,
-                                     flow.fluid_compressibility);
+                                     atmosphere.fluid_viscosity,
+                                     atmosphere.fluid_compressibility);
           law.set_time_step(dt);
           // Sharp surface tension (Eq. 108 on {alpha_h = 0}) whatever the
           // scene says.
           auto settings = TwoPhaseStokes<dim>::Settings::from(
-            flow, scene.domain.symmetry_planes, scene.refinement.max_level);
+            flow,
+            atmosphere,
+            scene.domain.symmetry_planes,
+            scene.refinement.max_level);
           settings.form = TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
           TwoPhaseStokes<dim> stokes(simulation.triangulation(), settings, law);
           stokes.setup_dofs();

@@ -58,7 +58,7 @@ bad_input_test(set_named "--set 'Mesh refinement/Band width=0.05': entry"
 bad_input_test(set_named_mechanism
   "--set 'Velocity/Expression constants=U': entry"
   --set "Velocity/Expression constants=U" ${SCENE})
-bad_input_test(scene_is_directory "is a directory, not a parameter file"
+bad_input_test(scene_is_directory "is a directory, not a file"
   ${HYGIENE})
 
 # A signal ends a long run (level 7: ~1000 steps) after the current step

@@ -317,7 +317,7 @@ namespace
     const auto    &particle = parameters.geometry.particles.at(0);
     const Point<2> centre(particle.at(0), particle.at(1));
     const double   R     = particle.at(2);
-    const double  gamma    = parameters.viscous_flow.surface_tension;
+    const double  gamma    = parameters.materials.surface_tension;
     // Means over r < R/2 and r > 3R/2, off the zone where the ASGS term
     // smears the jump (as viscous_static_bubble_2d).
     double sums[4] = {0, 0, 0, 0};

@@ -337,7 +337,7 @@ namespace
           throw std::runtime_error("the hollow case needs one particle and "
                                    "one pore");
         const double b0 = g.particles[0][dim], a0 = g.pores[0][dim];
-        const double gamma = scene.viscous_flow.surface_tension;
+        const double gamma = scene.materials.surface_tension;
         const double eta   = scene.viscous_flow.solid_viscosity;
         Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
         simulation.initialise();
@@ -570,7 +570,7 @@ namespace
         const auto   base = read_scene(scene_file, overrides);
         const double h    = study::cell_size(base, level);
         const double b    = base.geometry.particles.at(0).at(2);
-        const double gamma = base.viscous_flow.surface_tension;
+        const double gamma = base.materials.surface_tension;
         const double eta   = base.viscous_flow.solid_viscosity;
         // One directory per scene and CSV: the studies may run at once.
         const std::string stem =

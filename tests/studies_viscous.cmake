@@ -35,7 +35,7 @@ set_tests_properties(study_viscous_hopper_cfl0.25_2d
 foreach(c 0.1 1 10)
   add_test(NAME study_viscous_closed_pore_c${c}_2d COMMAND ${VISCOUS} pore
     ${VISCOUS_SCENES}/closed_pore_2d.prm 5 --pore-half-width 0.15
-    --band-cells 5.12 --filter-cells 6.4 --set "Time/End time=0.8" --set "Viscous flow/Fluid compressibility=${c}"
+    --band-cells 5.12 --filter-cells 6.4 --set "Time/End time=0.8" --set "Materials/Fluid compressibility=${c}"
     --csv closed_pore_2d_c${c}.csv)
   set_tests_properties(study_viscous_closed_pore_c${c}_2d PROPERTIES
     LABELS validation-long)
@@ -45,7 +45,7 @@ endforeach()
 foreach(ratio 1 1e-3 1e-6)
   add_test(NAME study_viscous_solver_ratio_${ratio}_2d COMMAND ${VISCOUS}
     hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6,7,8
-    --set "Time/End time=0.1" --set "Viscous flow/Fluid viscosity=${ratio}"
+    --set "Time/End time=0.1" --set "Materials/Fluid viscosity=${ratio}"
     --csv viscous_solver_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_solver_ratio_${ratio}_2d)
 endforeach()
@@ -54,7 +54,7 @@ endforeach()
 foreach(ratio 1 1e-6)
   add_test(NAME study_viscous_solver_t002_ratio_${ratio}_2d COMMAND ${VISCOUS}
     hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4,5,6,7,8,9
-    --set "Time/End time=0.02" --set "Viscous flow/Fluid viscosity=${ratio}"
+    --set "Time/End time=0.02" --set "Materials/Fluid viscosity=${ratio}"
     --csv viscous_solver_t002_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_solver_t002_ratio_${ratio}_2d)
 endforeach()
@@ -72,7 +72,7 @@ endforeach()
 foreach(ratio 1e-3 1e-6)
   add_test(NAME study_viscous_hopper_ratio_${ratio}_2d COMMAND ${VISCOUS}
     hopper ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
-    --set "Viscous flow/Fluid viscosity=${ratio}"
+    --set "Materials/Fluid viscosity=${ratio}"
     --csv viscous_hopper_ratio_${ratio}.csv)
   list(APPEND VISCOUS_STUDIES study_viscous_hopper_ratio_${ratio}_2d)
 endforeach()
@@ -106,7 +106,7 @@ add_test(NAME study_viscous_spheres_3d_curvature_k2_early COMMAND ${VISCOUS}
 foreach(ratio 1 1e-3 1e-6)
   add_test(NAME study_viscous_solver_3d_ratio_${ratio} COMMAND ${VISCOUS}
     spheres ${SPHERES} 3,4,5 --set "Time/End time=0.006"
-    --set "Viscous flow/Fluid viscosity=${ratio}"
+    --set "Materials/Fluid viscosity=${ratio}"
     --csv viscous_solver_3d_ratio_${ratio}.csv)
   list(APPEND SPHERES_STUDIES study_viscous_solver_3d_ratio_${ratio})
 endforeach()
@@ -163,10 +163,10 @@ hopper_accuracy(k5 two_cylinders_2d.prm 5
   --set "Mesh refinement/Curvature refinement levels=5")
 # The atmosphere (Hopper's is a void): viscosity and compressibility.
 hopper_accuracy(fluid_viscosity1e-6 two_cylinders_2d.prm 5
-  --set "Viscous flow/Fluid viscosity=1e-6")
+  --set "Materials/Fluid viscosity=1e-6")
 foreach(c 0.1 10)
   hopper_accuracy(compressibility${c} two_cylinders_2d.prm 5
-    --set "Viscous flow/Fluid compressibility=${c}")
+    --set "Materials/Fluid compressibility=${c}")
 endforeach()
 hopper_accuracy(capillary1_cfl0.5 two_cylinders_2d.prm 5
   --set "Viscous flow/Capillary time step factor=1"

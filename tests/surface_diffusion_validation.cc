@@ -421,7 +421,7 @@ namespace
     // in.
     const auto  &sd = scene.surface_diffusion;
     const auto  &vd = scene.volume_diffusion;
-    const double gamma = scene.viscous_flow.surface_tension;
+    const double gamma = scene.materials.surface_tension;
     const double t_star_per_t =
       scene.seconds_per_time_unit() /
       (vd.enabled ? vd.reduced_time_scale(r_bar, gamma) :

@@ -290,6 +290,7 @@ namespace
           const double R     = scene.geometry.particles[0][dim];
 
           ViscousFlow<dim>   flow(scene.viscous_flow,
+                                scene.materials,
                                 scene.domain.symmetry_planes,
                                 simulation.filter(),
                                 scene.refinement.max_level,
@@ -308,7 +309,7 @@ namespace
           flow.add_probe_velocity(alpha, 0, velocity);
           const double cpu_time = cpu_timer.cpu_time();
           const auto   p     = mean_pressures(flow.stokes(), alpha);
-          const double gamma = scene.viscous_flow.surface_tension;
+          const double gamma = scene.materials.surface_tension;
           const double eta   = scene.viscous_flow.solid_viscosity;
           const double p_exact = gamma * kappa_exact;
           const double error   = std::abs(p[0] - p[1] - p_exact) / p_exact;
@@ -415,12 +416,12 @@ namespace
        {"Output/Field formats", "none"}});
     if (dt_factor > 0)
       {
-        const auto viscous = read_scene(scene_file, overrides).viscous_flow;
+        const auto scene = read_scene(scene_file, overrides);
         overrides.insert(
           overrides.end(),
           {{"Time/Time step",
-            std::to_string(dt_factor * viscous.solid_viscosity * run.h /
-                           viscous.surface_tension)},
+            std::to_string(dt_factor * scene.viscous_flow.solid_viscosity *
+                           run.h / scene.materials.surface_tension)},
            {"Time/CFL number", "0"},
            {"Viscous flow/Capillary time step factor", "0"},
            {"Mesh refinement/Adapt interval", "1"}});
@@ -649,7 +650,7 @@ namespace
             const Hopper exact(R);
             const double m0 = pair.m();
             tau0            = exact.time(m0);
-            const double gamma = scene.viscous_flow.surface_tension;
+            const double gamma = scene.materials.surface_tension;
             const double eta   = zero_shear_viscosity(scene);
             const double exact_speed =
               exact.neck_speed(m0) * gamma / (eta * R);
@@ -687,11 +688,14 @@ namespace
           });
         runs.push_back(run);
         const Hopper exact(R);
-        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double gamma = run.scene.materials.surface_tension;
         const double eta   = zero_shear_viscosity(run.scene);
-        const auto  &t     = run.metrics.column("time");
-        const auto  &neck  = run.metrics.column("neck_radius");
-        auto         series = open_series(
+        // Time from the start (a scene's Start time may be Hopper's own).
+        std::vector<double> t = run.metrics.column("time");
+        for (double &t_i : t)
+          t_i -= run.scene.time.start_time;
+        const auto &neck   = run.metrics.column("neck_radius");
+        auto        series = open_series(
           options, level, "t_gamma_over_eta_R,neck_over_R,exact_neck_over_R");
         double max_error = 0, max_error_from_02 = 0, final_error = 0;
         std::vector<double> taus;
@@ -792,7 +796,7 @@ namespace
           run_level<dim>(scene_file, level, options, "spheres", [](auto &, auto &) {});
         runs.push_back(run);
         const double a     = run.scene.geometry.particles[0][dim];
-        const double gamma = run.scene.viscous_flow.surface_tension;
+        const double gamma = run.scene.materials.surface_tension;
         const double eta   = run.scene.viscous_flow.solid_viscosity;
         const auto  &t     = run.metrics.column("time");
         const auto  &neck  = run.metrics.column("neck_radius");
@@ -1083,7 +1087,7 @@ namespace
         const auto &v     = metrics.column("max_velocity");
         const auto &area  = metrics.column("volume_change");
         const double scale = scene.viscous_flow.solid_viscosity /
-                             scene.viscous_flow.surface_tension;
+                             scene.materials.surface_tension;
         // Row 0 is t = 0, before the first solve.
         std::vector<double> C;
         double              C_max = 0, area_max = 0;

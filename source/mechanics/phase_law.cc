@@ -90,13 +90,14 @@ namespace levelsinter
   std::unique_ptr<PhaseLaw<dim>>
   make_phase_law(const PhaseLawParameters     &law,
                  const ViscousFlowParameters  &flow,
+                 const MaterialsParameters    &materials,
                  const ViscoelasticState<dim> *polymer)
   {
     if (law.law == PhaseLawParameters::Law::elastic_solid)
       return std::make_unique<ElasticSolidFluid<dim>>(law.shear_modulus,
                                                       law.bulk_modulus,
-                                                      flow.fluid_viscosity,
-                                                      flow.fluid_compressibility);
+                                                      materials.fluid_viscosity,
+                                                      materials.fluid_compressibility);
     if (law.is_viscoelastic())
       {
         if (polymer == nullptr)
@@ -107,13 +108,13 @@ namespace levelsinter
           flow.solid_viscosity,
           law.polymer_viscosity,
           law.relaxation_time,
-          flow.fluid_viscosity,
-          flow.fluid_compressibility,
+          materials.fluid_viscosity,
+          materials.fluid_compressibility,
           *polymer);
       }
     return std::make_unique<NewtonianPhases<dim>>(flow.solid_viscosity,
-                                                  flow.fluid_viscosity,
-                                                  flow.fluid_compressibility);
+                                                  materials.fluid_viscosity,
+                                                  materials.fluid_compressibility);
   }
 
   template class ElasticSolidFluid<2>;
@@ -123,9 +124,11 @@ namespace levelsinter
   template std::unique_ptr<PhaseLaw<2>>
   make_phase_law(const PhaseLawParameters &,
                  const ViscousFlowParameters &,
+                 const MaterialsParameters &,
                  const ViscoelasticState<2> *);
   template std::unique_ptr<PhaseLaw<3>>
   make_phase_law(const PhaseLawParameters &,
                  const ViscousFlowParameters &,
+                 const MaterialsParameters &,
                  const ViscoelasticState<3> *);
 } // namespace levelsinter

@@ -43,11 +43,12 @@ namespace levelsinter
   typename TwoPhaseStokes<dim>::Settings
   TwoPhaseStokes<dim>::Settings::from(
     const ViscousFlowParameters           &parameters,
+    const MaterialsParameters             &materials,
     const std::vector<types::boundary_id> &symmetry_planes,
     const unsigned int                     band_level)
   {
     Settings settings;
-    settings.surface_tension = parameters.surface_tension;
+    settings.surface_tension = materials.surface_tension;
     using Choice  = ViscousFlowParameters::SurfaceTensionForm;
     settings.form = parameters.surface_tension_form == Choice::csf ?
                       SurfaceTensionForm::csf :

@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <levelsinter/mechanisms/prescribed_velocity.h>
+#include <levelsinter/scene/solid_geometry.h>
 
 #include <map>
 #include <stdexcept>
@@ -85,42 +86,13 @@ namespace levelsinter
           parameters.angular_velocity);
       }
 
-    // Expression: components separated by ';', variables x,y[,z],t.
-    std::map<std::string, double> constants;
-    for (const auto &item :
-         Utilities::split_string_list(parameters.expression_constants, ','))
-      {
-        const auto eq = item.find('=');
-        if (eq == std::string::npos)
-          throw std::runtime_error(
-            "entry 'Velocity/Expression constants': '" + item +
-            "' is not of the form NAME=VALUE");
-        constants[Utilities::trim(item.substr(0, eq))] =
-          Utilities::string_to_double(Utilities::trim(item.substr(eq + 1)));
-      }
-    constants["pi"] = M_PI;
-    auto function   = std::make_unique<FunctionParser<dim>>(dim);
-    try
-      {
-        function->initialize(FunctionParser<dim>::default_variable_names() +
-                               ",t",
-                             Utilities::split_string_list(parameters.expression,
-                                                          ';'),
-                             constants,
-                             /*time_dependent=*/true);
-        // Evaluate once so that an unknown symbol is reported now.
-        Vector<double> v(dim);
-        function->vector_value(Point<dim>(), v);
-      }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream info;
-        e.print_info(info);
-        throw std::runtime_error("entry 'Velocity/Expression': cannot parse '" +
-                                 parameters.expression + "': " +
-                                 Utilities::trim(info.str()));
-      }
-    return function;
+    // Expression: components separated by ';', variables x,y[,z],t
+    // (checked when the scene was read).
+    return make_expression_function<dim>(parameters.expression,
+                                         dim,
+                                         parameters.constants,
+                                         "Velocity/Expression",
+                                         /*time_dependent=*/true);
   }
 
   template <int dim>

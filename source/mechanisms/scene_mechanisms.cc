@@ -20,6 +20,7 @@ namespace levelsinter
     if (scene.viscous_flow.enabled)
       mechanisms.push_back(
         std::make_unique<ViscousFlow<dim>>(scene.viscous_flow,
+                                           scene.materials,
                                            scene.domain.symmetry_planes,
                                            filter,
                                            scene.refinement.max_level,
@@ -41,6 +42,7 @@ namespace levelsinter
         scene.volume_diffusion,
         scene.seconds_per_time_unit(),
         scene.viscous_flow,
+        scene.materials,
         scene.phase_law,
         scene.domain.symmetry_planes,
         filter,

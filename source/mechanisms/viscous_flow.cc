@@ -20,12 +20,14 @@ namespace levelsinter
   template <int dim>
   ViscousFlow<dim>::ViscousFlow(
     const ViscousFlowParameters           &parameters,
+    const MaterialsParameters             &materials,
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
                                 const unsigned int           band_level,
                                 TimerOutput                 &timer,
                                 const PhaseLawParameters    &law)
     : parameters(parameters)
+    , materials(materials)
     , symmetry_planes(symmetry_planes)
     , filter(filter)
     , band_level(band_level)
@@ -34,16 +36,14 @@ namespace levelsinter
                      std::make_unique<ViscoelasticState<dim>>(
                        law, filter, parameters.interface_half_width, band_level) :
                      nullptr)
-    , phases(make_phase_law<dim>(law, parameters, viscoelastic.get()))
+    , phases(make_phase_law<dim>(law, parameters, materials, viscoelastic.get()))
     , zero_shear_viscosity(parameters.solid_viscosity +
                            (law.is_viscoelastic() ? law.polymer_viscosity : 0))
     , relaxation_time(law.is_viscoelastic() ? law.relaxation_time : 0)
   {
+    // SceneParameters refuses the elastic solid with viscous flow.
     if (law.law == PhaseLawParameters::Law::elastic_solid)
-      throw std::runtime_error(
-        "entry 'Phase law/Law': viscous flow moves the particles with "
-        "their Newtonian velocity and needs 'newtonian' (the elastic solid "
-        "belongs to volume diffusion)");
+      throw std::logic_error("viscous flow with the elastic-solid law");
   }
 
   template <int dim>
@@ -54,6 +54,7 @@ namespace levelsinter
     h_min = finest_cell_size(tria);
     const auto settings =
       TwoPhaseStokes<dim>::Settings::from(parameters,
+                                          materials,
                                           symmetry_planes,
                                           band_level);
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
@@ -138,7 +139,7 @@ namespace levelsinter
                                  const double        dt,
                                  VelocityField<dim> &velocity)
   {
-    if (parameters.surface_tension > 0 && parameters.external_pressure == 0 &&
+    if (materials.surface_tension > 0 && parameters.external_pressure == 0 &&
         !step_started)
       {
         measures_at_step_start = interface_measures::volume_and_area(alpha);
@@ -337,11 +338,11 @@ namespace levelsinter
   ViscousFlow<dim>::time_step_limit(const LevelSetField<dim> &) const
   {
     if (parameters.capillary_time_step_factor == 0 ||
-        parameters.surface_tension == 0 ||
+        materials.surface_tension == 0 ||
         parameters.semi_implicit_surface_tension)
       return std::numeric_limits<double>::infinity();
     const double a = parameters.capillary_time_step_factor * h_min /
-                     parameters.surface_tension;
+                     materials.surface_tension;
     if (relaxation_time == 0)
       return a * zero_shear_viscosity;
     // A viscoelastic melt resists a step dt with the viscosity of its

@@ -80,6 +80,7 @@ namespace levelsinter
     const VolumeDiffusionParameters       &parameters,
     const double                           seconds_per_time_unit,
     const ViscousFlowParameters           &mechanics,
+    const MaterialsParameters             &materials,
     const PhaseLawParameters              &law,
     const std::vector<types::boundary_id> &symmetry_planes,
     const LevelSetFilter                  &filter,
@@ -88,10 +89,11 @@ namespace levelsinter
     : coefficient(parameters.mobility() * seconds_per_time_unit)
     , seconds_per_time_unit(seconds_per_time_unit)
     , settings(TwoPhaseStokes<dim>::Settings::from(mechanics,
+                                                   materials,
                                                    symmetry_planes,
                                                    band_level))
-    , phases(make_phase_law<dim>(law, mechanics))
-    , probe_step(mechanics.fluid_viscosity / (1e-5 * law.shear_modulus))
+    , phases(make_phase_law<dim>(law, mechanics, materials))
+    , probe_step(materials.fluid_viscosity / (1e-5 * law.shear_modulus))
     , limit_per_h3([&]() {
       const double G = law.shear_modulus, K = law.bulk_modulus;
       const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
@@ -99,7 +101,7 @@ namespace levelsinter
       // the decay rate of the finest modes, n ~ R / h, is proportional to
       // (2/3)(1 + nu) C_v gamma / h^3.
       return parameters.time_step_factor * measured_limit /
-             (2. / 3 * (1 + nu) * coefficient * mechanics.surface_tension);
+             (2. / 3 * (1 + nu) * coefficient * materials.surface_tension);
     }())
     , timer(timer)
     , extension(filter,

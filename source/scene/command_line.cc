@@ -2,9 +2,10 @@
 #include <deal.II/base/utilities.h>
 
 #include <levelsinter/scene/command_line.h>
+#include <levelsinter/scene/parameter_entries.h>
 
+#include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
@@ -32,10 +33,7 @@ namespace levelsinter
                    const std::string &path,
                    const std::string &value)
     {
-      auto parts = Utilities::split_string_list(path, '/');
-      if (parts.empty() || parts.back().empty())
-        throw std::runtime_error("--set '" + path +
-                                 "': expected 'Section/entry=value'");
+      auto              parts = Utilities::split_string_list(path, '/');
       const std::string entry = parts.back();
       parts.pop_back();
       unsigned int depth = 0;
@@ -84,6 +82,10 @@ namespace levelsinter
            "  levelsinter --set \"Mesh refinement/Maximum level=7\" "
            "scene.prm\n"
            "Subsections are separated by '/'; a top-level entry has no '/'.\n"
+           "Relative paths: files a scene reads (Geometry/Particle file) "
+           "are found beside the\n"
+           "scene file; Output/Directory is relative to the working "
+           "directory.\n"
            "Outputs (fields, metrics.csv, parameters.prm) go to "
            "Output/Directory. A directory\n"
            "that holds an earlier run is refused unless --overwrite (or "
@@ -123,13 +125,15 @@ namespace levelsinter
                 "--set needs an argument 'Section/entry=value'");
             const std::string assignment = argv[++i];
             const auto        eq         = assignment.find('=');
-            if (eq == std::string::npos)
+            const auto        parts =
+              Utilities::split_string_list(assignment.substr(0, eq), '/');
+            if (eq == std::string::npos || parts.empty() ||
+                std::find(parts.begin(), parts.end(), "") != parts.end())
               throw std::runtime_error("--set '" + assignment +
                                        "': expected 'Section/entry=value'");
             // "A / b = 1" is stored as "A/b", the form error messages use.
             std::string path;
-            for (const auto &part : Utilities::split_string_list(
-                   assignment.substr(0, eq), '/'))
+            for (const auto &part : parts)
               path += (path.empty() ? "" : "/") + part;
             cl.overrides.emplace_back(
               path, Utilities::trim(assignment.substr(eq + 1)));
@@ -168,13 +172,7 @@ namespace levelsinter
     SceneParameters::declare_parameters(prm);
     if (!scene_file.empty())
       {
-        if (std::filesystem::is_directory(scene_file))
-          throw std::runtime_error("scene file '" + scene_file +
-                                   "' is a directory, not a parameter file");
-        std::ifstream probe(scene_file);
-        if (!probe)
-          throw std::runtime_error("scene file '" + scene_file +
-                                   "' cannot be opened for reading");
+        check_text_file(scene_file, "scene file");
         try
           {
             prm.parse_input(scene_file);
@@ -195,12 +193,47 @@ namespace levelsinter
     const std::string                                      &scene_file,
     const std::vector<std::pair<std::string, std::string>> &overrides)
   {
+    // The entry the message is about ("entry 'Section/Entry': ...") and its
+    // section: a rule across entries names the others as 'Entry' if they
+    // are in that section, else as 'Section/Entry'.
+    std::string entry;
+    const auto  from = message.find("entry '");
+    if (from != std::string::npos)
+      entry = message.substr(from + 7,
+                             message.find('\'', from + 7) - (from + 7));
+    const std::string section = entry.substr(0, entry.rfind('/') + 1);
+    // Every --set of an entry the message names (the last one per entry),
+    // and the scene file if the entry the message is about came from it.
+    std::vector<std::string> sources;
+    std::vector<std::string> seen;
+    bool                     entry_overridden = false;
     for (auto o = overrides.rbegin(); o != overrides.rend(); ++o)
-      if (message.find("'" + o->first + "'") != std::string::npos)
-        return "--set '" + o->first + "=" + o->second + "': " + message;
-    return (scene_file.empty() ? std::string("scene") :
-                                 "scene file '" + scene_file + "'") +
-           ": " + message;
+      {
+        const std::string &path = o->first;
+        const std::string  leaf = path.substr(path.rfind('/') + 1);
+        const bool         named =
+          message.find("'" + path + "'") != std::string::npos ||
+          (!section.empty() && path == section + leaf &&
+           message.find("'" + leaf + "'") != std::string::npos);
+        if (!named ||
+            std::find(seen.begin(), seen.end(), path) != seen.end())
+          continue;
+        seen.push_back(path);
+        sources.insert(sources.begin(),
+                       "--set '" + path + "=" + o->second + "'");
+        // (An old name the message gives after the new: the same entry.)
+        entry_overridden =
+          entry_overridden || path == entry ||
+          message.find("'" + path + "', deprecated") != std::string::npos;
+      }
+    if (!entry_overridden)
+      sources.insert(sources.begin(),
+                     scene_file.empty() ? std::string("scene") :
+                                          "scene file '" + scene_file + "'");
+    std::string result;
+    for (const auto &s : sources)
+      result += (result.empty() ? "" : ", ") + s;
+    return result + ": " + message;
   }
 
   SceneParameters

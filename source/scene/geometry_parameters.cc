@@ -131,7 +131,9 @@ namespace levelsinter
         "CSV file of particles (same length unit as the domain): a header "
         "line naming the columns x, y, r (2D) or x, y, z, r (3D) in any "
         "order (case and spaces ignored), then one particle per line. "
-        "Relative paths are relative to the scene file. Blank lines and "
+        "Relative paths are relative to the scene file (what a scene "
+        "reads is found beside it; Output/Directory, what a run writes, "
+        "is relative to the working directory). Blank lines and "
         "lines starting with '#' are ignored.");
       prm.declare_entry(
         "Pores",

@@ -12,8 +12,10 @@ namespace levelsinter
                         "output",
                         Patterns::Anything(),
                         "Directory for fields and metrics.csv; created if "
-                        "missing. Relative paths are relative to the current "
-                        "working directory.");
+                        "missing. Relative paths are relative to the "
+                        "working directory: what a run writes goes where it "
+                        "is started, what a scene reads (Geometry/Particle "
+                        "file) is found beside the scene file.");
       prm.declare_entry("Overwrite",
                         "false",
                         Patterns::Bool(),

@@ -1,5 +1,6 @@
 #include <deal.II/base/utilities.h>
 
+#include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/particles.h>
 
 #include <algorithm>
@@ -84,10 +85,8 @@ namespace levelsinter
                      const std::string         &item_name,
                      std::vector<unsigned int> *lines)
   {
+    check_text_file(file_name, item_name + " file");
     std::ifstream in(file_name);
-    if (!in)
-      throw std::runtime_error(item_name + " file '" + file_name +
-                               "' cannot be opened for reading");
     const std::vector<std::string> names =
       dim == 2 ? std::vector<std::string>{"x", "y", "r"} :
                  std::vector<std::string>{"x", "y", "z", "r"};

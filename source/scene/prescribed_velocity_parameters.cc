@@ -2,6 +2,7 @@
 
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/prescribed_velocity_parameters.h>
+#include <levelsinter/scene/solid_geometry.h>
 
 #include <cmath>
 
@@ -73,12 +74,22 @@ namespace levelsinter
       }
     angular_velocity     = prm.get_double("Angular velocity");
     expression           = prm.get("Expression");
-    expression_constants = prm.get("Expression constants");
+    constants = parse_constants(prm.get("Expression constants"),
+                                "Velocity/Expression constants");
     prm.leave_subsection();
-    if (type == Type::expression &&
-        Utilities::split_string_list(expression, ';').size() != d)
-      fail_entry("Velocity/Expression",
-                 "needs " + std::to_string(d) + " components separated by ';'");
+    if (type == Type::expression)
+      {
+        if (Utilities::split_string_list(expression, ';').size() != d)
+          fail_entry("Velocity/Expression",
+                     "needs " + std::to_string(d) +
+                       " components separated by ';'");
+        if (d == 2)
+          make_expression_function<2>(
+            expression, d, constants, "Velocity/Expression", true);
+        else
+          make_expression_function<3>(
+            expression, d, constants, "Velocity/Expression", true);
+      }
     if (type == Type::rotation && d == 3 &&
         std::hypot(rotation_axis[0], rotation_axis[1], rotation_axis[2]) == 0)
       fail_entry("Velocity/Rotation axis", "must not be the zero vector");

@@ -25,7 +25,12 @@ namespace levelsinter
       {"Level set/Reinitialization tolerance",
        "Level set/Reinitialisation tolerance"},
       {"Level set/Solid reinitialization from band cells",
-       "Level set/Solid reinitialisation from band cells"}};
+       "Level set/Solid reinitialisation from band cells"},
+      // Volume diffusion needs them with viscous flow off.
+      {"Viscous flow/Surface tension", "Materials/Surface tension"},
+      {"Viscous flow/Fluid viscosity", "Materials/Fluid viscosity"},
+      {"Viscous flow/Fluid compressibility",
+       "Materials/Fluid compressibility"}};
 
     // Memory per cell, measured with viscous flow (the largest footprint
     // of the mechanisms) as the growth of the peak resident memory between
@@ -63,6 +68,7 @@ namespace levelsinter
     LevelSetParameters::declare(prm);
     RefinementParameters::declare(prm);
     TimeParameters::declare(prm);
+    MaterialsParameters::declare(prm);
     PrescribedVelocityParameters::declare(prm);
     ViscousFlowParameters::declare(prm);
     SurfaceDiffusionParameters::declare(prm);
@@ -139,7 +145,7 @@ namespace levelsinter
     if (vd.enabled &&
         vd.time_unit == VolumeDiffusionParameters::TimeUnit::reduced)
       return vd.reduced_time_scale(vd.reference_radius,
-                                   viscous_flow.surface_tension);
+                                   materials.surface_tension);
     return 1;
   }
 
@@ -158,6 +164,7 @@ namespace levelsinter
         level_set.parse(prm);
         refinement.parse(prm);
         time.parse(prm);
+        materials.parse(prm);
         velocity.parse(prm, dimension);
         viscous_flow.parse(prm);
         surface_diffusion.parse(prm);
@@ -166,6 +173,7 @@ namespace levelsinter
         output.parse(prm);
         analysis.parse(prm, dimension);
         phase_law.parse(prm);
+        resolve_automatic_values();
         check_across_sections();
       }
     catch (const std::runtime_error &e)
@@ -180,10 +188,8 @@ namespace levelsinter
   }
 
   void
-  SceneParameters::check_across_sections()
+  SceneParameters::resolve_automatic_values()
   {
-    const unsigned int d = dimension;
-
     level_set.solid_reinitialization_from_band =
       level_set.solid_reinitialization ==
           LevelSetParameters::SolidReinitialization::automatic ?
@@ -198,19 +204,46 @@ namespace levelsinter
     volume_correction.enabled =
       volume_correction.choice ==
           VolumeCorrectionParameters::Choice::automatic ?
-        viscous_flow.enabled && viscous_flow.surface_tension != 0 &&
+        viscous_flow.enabled && materials.surface_tension != 0 &&
           viscous_flow.surface_tension_form != Form::csf_curvature :
         volume_correction.choice == VolumeCorrectionParameters::Choice::on;
 
+    // The axis of an axisymmetric scene is a mirror of the half plane:
+    // v_r = 0 there, and the refinement and the rigid modes treat it as a
+    // symmetry plane.
+    auto &planes = domain.symmetry_planes;
+    if (geometry.axisymmetric &&
+        std::find(planes.begin(), planes.end(), 0) == planes.end())
+      planes.insert(planes.begin(), 0);
+  }
+
+  void
+  SceneParameters::check_across_sections()
+  {
+    const unsigned int d = dimension;
+
     // A mechanism that computes a velocity (viscous flow, surface
     // diffusion) lets the CFL number or its own limit choose the step.
-    if (velocity.type == PrescribedVelocityParameters::Type::none &&
-        time.time_step == 0 && !viscous_flow.enabled &&
-        !surface_diffusion.enabled && !volume_diffusion.enabled)
+    const bool moving = velocity.type !=
+                          PrescribedVelocityParameters::Type::none ||
+                        viscous_flow.enabled || surface_diffusion.enabled ||
+                        volume_diffusion.enabled;
+    if (!moving && time.time_step == 0)
       fail_entry("Time/Time step",
                  "with Velocity/Type = none and no mechanism giving a "
                  "velocity the CFL number cannot choose a step: set a "
                  "positive 'Time step'");
+    // A step longer than the run is cut to the run; said, because the
+    // run's result depends on it.
+    const double duration = time.end_time - time.start_time;
+    if (duration > 0 && time.time_step > duration)
+      {
+        std::ostringstream what;
+        what << "'Time/Time step' = " << time.time_step
+             << " is longer than the run (End time - Start time = "
+             << duration << "): the steps are at most " << duration;
+        warnings.push_back(what.str());
+      }
 
     // Volume diffusion moves the interface with -C_v (grad p . n) n of the
     // elastic solid's pressure (Algorithm 3): the particles do not flow.
@@ -221,17 +254,20 @@ namespace levelsinter
                      "cannot be combined with 'Viscous flow/Enabled = "
                      "true': volume diffusion solves the elastic-solid "
                      "problem itself and moves the interface by diffusion "
-                     "only (its surface tension and atmosphere are read "
-                     "from the Viscous flow section, which stays disabled)");
+                     "only");
         if (phase_law.law != PhaseLawParameters::Law::elastic_solid)
           fail_entry("Phase law/Law",
                      "must be 'elastic-solid' with volume diffusion: the "
                      "pressure that drives it is that of the elastic "
                      "particles (paper Eq. 92-94)");
-        if (!(viscous_flow.surface_tension > 0))
-          fail_entry("Viscous flow/Surface tension",
+        if (!(materials.surface_tension > 0))
+          fail_entry("Materials/Surface tension",
                      "must be positive with volume diffusion: it is the "
                      "surface energy gamma that loads the elastic solid");
+        if (!(materials.fluid_viscosity > 0))
+          fail_entry("Materials/Fluid viscosity",
+                     "must be positive with volume diffusion: the "
+                     "atmosphere around the elastic solid is a fluid");
         // Surface and volume diffusion together (Eq. 118, Algorithm 4) run
         // in one time: seconds, or the one reduced time a section names.
         if (surface_diffusion.enabled &&
@@ -245,6 +281,45 @@ namespace levelsinter
                      "R^4 or C_v gamma t / R^3; set one of the two to "
                      "seconds (its coefficient is then converted to the "
                      "other's t*)");
+      }
+
+    if (viscous_flow.enabled)
+      {
+        // The particles move with the Stokes velocity: a phase law with
+        // history (the elastic solid of volume diffusion) has none.
+        if (phase_law.law == PhaseLawParameters::Law::elastic_solid)
+          fail_entry("Phase law/Law",
+                     "'elastic-solid' cannot be used with viscous flow, "
+                     "which moves the particles with their Newtonian (or "
+                     "viscoelastic) velocity: use 'newtonian', or volume "
+                     "diffusion for elastic particles");
+        if (!(materials.fluid_viscosity > 0))
+          fail_entry("Materials/Fluid viscosity",
+                     "must be positive when viscous flow is enabled");
+        // Without surface tension and external pressure nothing drives the
+        // flow: the right-hand side is zero, the solver returns at once and
+        // the run would only repeat t = 0.
+        if (materials.surface_tension == 0 &&
+            viscous_flow.external_pressure == 0)
+          fail_entry("Materials/Surface tension",
+                     "must be positive when viscous flow is enabled and "
+                     "'Viscous flow/External pressure' is 0: nothing else "
+                     "drives the flow");
+        // The flow's time is the seconds of its viscosities and surface
+        // tension.
+        if (surface_diffusion.enabled &&
+            surface_diffusion.time_unit == SurfaceDiffusion::TimeUnit::reduced)
+          fail_entry("Surface diffusion/Time unit",
+                     "cannot be 'reduced' with viscous flow: the flow runs "
+                     "in the seconds of its viscosity and surface tension; "
+                     "set 'seconds'");
+        if (surface_diffusion.enabled)
+          warnings.push_back(
+            "viscous flow and surface diffusion are both enabled: the "
+            "interface moves with the sum of the Stokes velocity and the "
+            "surface-diffusion velocity C_s (Laplace-Beltrami of kappa) n, "
+            "each computed as if alone (doc/user_guide.md, \"Combining "
+            "mechanisms\")");
       }
 
     // An axisymmetric scene has the hoop terms in the viscous-flow forms
@@ -262,11 +337,6 @@ namespace levelsinter
                      "'Geometry/Axisymmetric = true' yet (it serves volume "
                      "diffusion, which is not axisymmetric); run the scene "
                      "in 3D");
-        // The axis is a mirror of the half plane: v_r = 0 there, and the
-        // refinement and the rigid modes treat it as a symmetry plane.
-        auto &planes = domain.symmetry_planes;
-        if (std::find(planes.begin(), planes.end(), 0) == planes.end())
-          planes.insert(planes.begin(), 0);
       }
 
     // A viscoelastic melt flows: its polymer stress is part of the viscous

@@ -1,6 +1,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/utilities.h>
 
+#include <deal.II/lac/vector.h>
+
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/solid_geometry.h>
 
@@ -275,47 +277,56 @@ namespace levelsinter
       return points;
     }
 
-    // The muparser function of x, y[, z]; errors name the entry.
-    template <int dim>
-    std::shared_ptr<FunctionParser<dim>>
-    make_parser(const std::string                   &expression,
-                const std::map<std::string, double> &constants,
-                const std::string                   &entry_name)
-    {
-      auto f = std::make_shared<FunctionParser<dim>>(1);
-      // deal.II prints muparser's diagnosis to std::cerr before it throws;
-      // the error message below carries it instead.
-      std::ostringstream silenced;
-      auto *const        cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
-      try
-        {
-          f->initialize(FunctionParser<dim>::default_variable_names(),
-                        expression,
-                        constants);
-          f->value(Point<dim>());
-          std::cerr.rdbuf(cerr_buffer);
-        }
-      catch (const std::exception &e)
-        {
-          std::cerr.rdbuf(cerr_buffer);
-          // The parser's words, without deal.II's frame and stack trace.
-          std::string said = e.what();
-          const auto  from = said.find("The parser said:");
-          said = said.substr(from == std::string::npos ? 0 : from + 16);
-          said = said.substr(0, said.find("Stacktrace"));
-          std::string words;
-          for (const auto &w : Utilities::split_string_list(said, ' '))
-            for (const auto &part : Utilities::split_string_list(w, '\n'))
-              if (!part.empty())
-                words += (words.empty() ? "" : " ") + part;
-          throw std::runtime_error(
-            "entry '" + entry_name + "': the expression '" + expression +
-            "' (of " + FunctionParser<dim>::default_variable_names() +
-            " and the constants) cannot be evaluated: " + words);
-        }
-      return f;
-    }
   } // namespace
+
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  make_expression_function(const std::string                   &expression,
+                           const unsigned int                   n_components,
+                           const std::map<std::string, double> &constants,
+                           const std::string                   &entry_name,
+                           const bool                           time_dependent)
+  {
+    const std::string variables =
+      FunctionParser<dim>::default_variable_names() +
+      (time_dependent ? ",t" : "");
+    auto f = std::make_unique<FunctionParser<dim>>(n_components);
+    // deal.II prints muparser's diagnosis to std::cerr before it throws;
+    // the error message below carries it instead.
+    std::ostringstream silenced;
+    auto *const        cerr_buffer = std::cerr.rdbuf(silenced.rdbuf());
+    try
+      {
+        f->initialize(variables,
+                      Utilities::split_string_list(expression, ';'),
+                      constants,
+                      time_dependent);
+        // Evaluate once so that an unknown symbol is reported now.
+        Vector<double> v(n_components);
+        f->vector_value(Point<dim>(), v);
+        std::cerr.rdbuf(cerr_buffer);
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr.rdbuf(cerr_buffer);
+        // The parser's words, without deal.II's frame and stack trace.
+        std::string said = e.what();
+        const auto  from = said.find("The parser said:");
+        said = said.substr(from == std::string::npos ? 0 : from + 16);
+        said = said.substr(0, said.find("Stacktrace"));
+        std::string words;
+        for (const auto &w : Utilities::split_string_list(said, ' '))
+          for (const auto &part : Utilities::split_string_list(w, '\n'))
+            if (!part.empty())
+              words += (words.empty() ? "" : " ") + part;
+        throw std::runtime_error("entry '" + entry_name +
+                                 "': the expression '" + expression +
+                                 "' (of " + variables +
+                                 " and the constants) cannot be evaluated: " +
+                                 words);
+      }
+    return f;
+  }
 
   template <int dim>
   void
@@ -361,7 +372,8 @@ namespace levelsinter
                           const std::vector<double>           &upper_corner,
                           const std::string                   &entry_name)
   {
-    const auto         f = make_parser<dim>(expression, constants, entry_name);
+    const auto f =
+      make_expression_function<dim>(expression, 1, constants, entry_name);
     const unsigned int n = dim == 2 ? 64 : 24;
     double             smallest = std::numeric_limits<double>::max();
     for (unsigned int k = 0; k < std::pow(n + 1, dim); ++k)
@@ -439,7 +451,8 @@ namespace levelsinter
                          const double                         length_scale,
                          const std::string                   &entry_name)
   {
-    const auto f = make_parser<dim>(expression, constants, entry_name);
+    const std::shared_ptr<FunctionParser<dim>> f =
+      make_expression_function<dim>(expression, 1, constants, entry_name);
     return std::make_unique<ImplicitSurfaceDistance<dim>>(
       [f](const Point<dim> &x) { return f->value(x); }, length_scale);
   }
@@ -493,6 +506,18 @@ namespace levelsinter
                              const std::vector<double> &,
                              const std::vector<double> &,
                              const std::string &);
+  template std::unique_ptr<FunctionParser<2>>
+  make_expression_function<2>(const std::string &,
+                              const unsigned int,
+                              const std::map<std::string, double> &,
+                              const std::string &,
+                              const bool);
+  template std::unique_ptr<FunctionParser<3>>
+  make_expression_function<3>(const std::string &,
+                              const unsigned int,
+                              const std::map<std::string, double> &,
+                              const std::string &,
+                              const bool);
   template std::unique_ptr<Function<2>>
   make_superellipse_distance<2>(const std::vector<double> &);
   template std::unique_ptr<Function<3>>

@@ -1,6 +1,8 @@
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/time_parameters.h>
 
+#include <string>
+
 namespace levelsinter
 {
   void
@@ -8,11 +10,20 @@ namespace levelsinter
   {
     prm.enter_subsection("Time");
     {
+      prm.declare_entry("Start time",
+                        "0",
+                        Patterns::Double(0),
+                        "Time of the initial shape, in the scene time unit: "
+                        "the first row of metrics.csv. A scene that starts "
+                        "from a known state of a solution (e.g. Geometry/"
+                        "Shape = hopper at t gamma / (eta R) = tau) gives "
+                        "its time here, so that its time axis is the "
+                        "solution's.");
       prm.declare_entry("End time",
                         "1",
                         Patterns::Double(0),
-                        "Simulated time at which the run stops, in the "
-                        "scene time unit (s with material data, or the "
+                        "Simulated time at which the run stops (at least "
+                        "the Start time), in the scene time unit (s with material data, or the "
                         "reduced time of Surface diffusion/Time unit).");
       prm.declare_entry("Time step",
                         "0",
@@ -50,19 +61,24 @@ namespace levelsinter
   TimeParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Time");
+    start_time         = prm.get_double("Start time");
     end_time           = prm.get_double("End time");
     time_step          = prm.get_double("Time step");
     cfl                = prm.get_double("CFL number");
     max_steps          = prm.get_integer("Maximum steps");
     relative_time_step = prm.get_double("Relative time step");
     prm.leave_subsection();
+    if (end_time < start_time)
+      fail_entry("Time/End time",
+                 "is " + std::to_string(end_time) +
+                   ", before the Start time " + std::to_string(start_time));
     if (time_step == 0 && cfl == 0)
       fail_entry("Time/CFL number",
                  "a CFL number or a fixed 'Time step' must be given (both "
                  "are 0)");
     if (relative_time_step > 0 && time_step == 0)
       fail_entry("Time/Time step",
-                 "must be positive with a Relative time step: it is the "
+                 "must be positive with a 'Relative time step': it is the "
                  "first step, taken at t = 0 where r t is 0");
   }
 } // namespace levelsinter

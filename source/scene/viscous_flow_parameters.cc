@@ -17,29 +17,12 @@ namespace levelsinter
                         Patterns::Bool(),
                         "Solve two-phase Stokes with surface tension every "
                         "step and move the interface with its velocity.");
-      prm.declare_entry("Surface tension",
-                        "1",
-                        Patterns::Double(0),
-                        "gamma on alpha = 0, in N/m (in a scene without "
-                        "material data: solid viscosity x length unit per "
-                        "scene time unit). Must be positive when viscous "
-                        "flow is enabled.");
       prm.declare_entry("Solid viscosity",
                         "1",
                         Patterns::Double(0),
                         "eta_s of the particles, in Pa s (or the scene's "
-                        "viscosity unit, e.g. 1).");
-      prm.declare_entry("Fluid viscosity",
-                        "1e-3",
-                        Patterns::Double(0),
-                        "eta_f of the atmosphere, same unit as the solid "
-                        "viscosity; eta_f/eta_s down to 1e-6.");
-      prm.declare_entry("Fluid compressibility",
-                        "1",
-                        Patterns::Double(0),
-                        "c in div v = -c p / eta_f in the atmosphere (no "
-                        "unit; its bulk viscosity is eta_f / c); lets closed "
-                        "pores shrink. 0: incompressible atmosphere.");
+                        "viscosity unit, e.g. 1). The surface tension and "
+                        "the atmosphere are in the Materials section.");
       prm.declare_entry("Surface tension form",
                         "sharp",
                         Patterns::Selection("csf|sharp|csf-curvature"),
@@ -109,11 +92,8 @@ namespace levelsinter
   ViscousFlowParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Viscous flow");
-    enabled               = prm.get_bool("Enabled");
-    surface_tension       = prm.get_double("Surface tension");
-    solid_viscosity       = prm.get_double("Solid viscosity");
-    fluid_viscosity       = prm.get_double("Fluid viscosity");
-    fluid_compressibility = prm.get_double("Fluid compressibility");
+    enabled              = prm.get_bool("Enabled");
+    solid_viscosity      = prm.get_double("Solid viscosity");
     surface_tension_form  = read_selection<SurfaceTensionForm>(
       prm,
       "Viscous flow",
@@ -144,19 +124,11 @@ namespace levelsinter
       return;
     const std::vector<std::pair<double, std::string>> positive = {
       {solid_viscosity, "Solid viscosity"},
-      {fluid_viscosity, "Fluid viscosity"},
       {interface_half_width, "Interface half width"},
       {stabilisation_constant, "Stabilisation constant"}};
     for (const auto &[value, entry] : positive)
       if (value <= 0)
         fail_entry("Viscous flow/" + entry,
                    "must be positive when viscous flow is enabled");
-    // Without surface tension and external pressure nothing drives the
-    // flow: the right-hand side is zero, the solver returns at once and
-    // the run would only repeat t = 0.
-    if (surface_tension == 0 && external_pressure == 0)
-      fail_entry("Viscous flow/Surface tension",
-                 "must be positive when viscous flow is enabled and "
-                 "External pressure is 0: nothing else drives the flow");
   }
 } // namespace levelsinter

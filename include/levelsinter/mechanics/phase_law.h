@@ -7,6 +7,7 @@
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <levelsinter/mechanics/viscoelastic_state.h>
+#include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -301,13 +302,15 @@ namespace levelsinter
   };
 
   /**
-   * The law a scene asks for ('Phase law/Law'), with the atmosphere of
-   * 'Viscous flow'; a viscoelastic law reads the polymer stress of
-   * @p polymer (required for it, unused otherwise).
+   * The law a scene asks for ('Phase law/Law'), with the particles'
+   * viscosity of 'Viscous flow' and the atmosphere of 'Materials'; a
+   * viscoelastic law reads the polymer stress of @p polymer (required for
+   * it, unused otherwise).
    */
   template <int dim>
   std::unique_ptr<PhaseLaw<dim>>
   make_phase_law(const PhaseLawParameters     &law,
                  const ViscousFlowParameters  &flow,
+                 const MaterialsParameters    &materials,
                  const ViscoelasticState<dim> *polymer = nullptr);
 } // namespace levelsinter

@@ -16,6 +16,7 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
 #include <vector>
@@ -97,6 +98,7 @@ namespace levelsinter
        * @p band_level. */
       static Settings
       from(const ViscousFlowParameters           &parameters,
+           const MaterialsParameters             &materials,
            const std::vector<types::boundary_id> &symmetry_planes,
            const unsigned int                     band_level);
     };

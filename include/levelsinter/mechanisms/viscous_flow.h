@@ -37,10 +37,12 @@ namespace levelsinter
      * velocity. @p band_level: the refinement level of the interface band,
      * where the smoothing width E of the phases is set
      * (TwoPhaseStokes::Settings). @p law: the particles' phase law
-     * (make_phase_law()); one with history (elastic) is refused: moving the
-     * interface with v is viscous sintering only.
+     * (make_phase_law()); one with history (elastic) is a logic error
+     * (SceneParameters refuses it): moving the interface with v is viscous
+     * sintering only. @p materials: surface tension and atmosphere.
      */
     ViscousFlow(const ViscousFlowParameters           &parameters,
+                const MaterialsParameters             &materials,
                 const std::vector<types::boundary_id> &symmetry_planes,
                 const LevelSetFilter                  &filter,
                 const unsigned int                     band_level,
@@ -170,6 +172,7 @@ namespace levelsinter
     update_curvature(const LevelSetField<dim> &alpha);
 
     const ViscousFlowParameters          parameters;
+    const MaterialsParameters            materials;
     const std::vector<types::boundary_id> symmetry_planes;
     const LevelSetFilter                 filter;
     const unsigned int                   band_level;

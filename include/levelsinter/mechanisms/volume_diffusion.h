@@ -27,8 +27,8 @@ namespace levelsinter
    * v = -C_v xi N at the level-set nodes (Eq. 112). The particles do not
    * move with the elastic velocity; it only builds the displacement
    * u^n = u^{n-1} + dt v^n whose strain the next step's history reads.
-   * Surface energy gamma, atmosphere and solver: the `Viscous flow`
-   * entries (disabled as a mechanism); moduli: `Phase law`.
+   * Surface energy gamma and atmosphere: `Materials`; solver: the
+   * `Viscous flow` entries (disabled as a mechanism); moduli: `Phase law`.
    */
   template <int dim>
   class VolumeDiffusion : public Mechanism<dim>
@@ -37,6 +37,7 @@ namespace levelsinter
     VolumeDiffusion(const VolumeDiffusionParameters       &parameters,
                     const double                           seconds_per_unit,
                     const ViscousFlowParameters           &mechanics,
+                    const MaterialsParameters             &materials,
                     const PhaseLawParameters              &law,
                     const std::vector<types::boundary_id> &symmetry_planes,
                     const LevelSetFilter                  &filter,

@@ -40,9 +40,10 @@ namespace levelsinter
   };
 
   /**
-   * @p message about a value, prefixed with where the value came from: the
-   * --set of the entry the message names in quotes ('Section/entry'; the
-   * last such --set), else the scene file.
+   * @p message about a value, prefixed with where the values it names came
+   * from: each --set of an entry the message names in quotes (the last one
+   * per entry; 'Section/Entry', or 'Entry' in the section of the entry the
+   * message is about), and the scene file unless a --set gave that entry.
    */
   std::string
   with_source(

@@ -15,6 +15,15 @@ namespace levelsinter
   fail_entry(const std::string &entry, const std::string &what);
 
   /**
+   * Throw std::runtime_error "@p what '@p file_name' ..." unless the file is
+   * a readable text file: a directory, a file that cannot be opened and one
+   * holding binary data (a control character other than white space) are
+   * each named as such, so that no raw bytes reach a message.
+   */
+  void
+  check_text_file(const std::string &file_name, const std::string &what);
+
+  /**
    * Read entry @p entry of the current subsection @p section as @p n
    * comma-separated finite numbers (a point or a vector).
    */

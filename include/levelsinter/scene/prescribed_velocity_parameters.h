@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -26,7 +27,8 @@ namespace levelsinter
 
     /** Read and check; throws std::runtime_error naming the entry. Vectors
      * are read only where the type uses them, so that the 2D defaults do
-     * not get in the way of a 3D scene. */
+     * not get in the way of a 3D scene; an expression is parsed and
+     * evaluated once here, so that the run never starts with a bad one. */
     void
     parse(ParameterHandler &prm, const unsigned int dimension);
 
@@ -36,6 +38,7 @@ namespace levelsinter
     std::vector<double> rotation_axis;
     double              angular_velocity = 0;
     std::string         expression;
-    std::string         expression_constants;
+    // Expression constants by name (pi always defined).
+    std::map<std::string, double> constants;
   };
 } // namespace levelsinter

@@ -6,6 +6,7 @@
 #include <levelsinter/scene/domain_parameters.h>
 #include <levelsinter/scene/geometry_parameters.h>
 #include <levelsinter/scene/level_set_parameters.h>
+#include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/output_parameters.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/prescribed_velocity_parameters.h>
@@ -25,8 +26,9 @@ namespace levelsinter
 
   /**
    * Everything a scene file says, parsed and checked: one parameter group
-   * per section (each declares and parses its own entries), then one pass
-   * over the rules that span sections. The entries are declared once
+   * per section (each declares and parses its own entries), then the
+   * values that depend on several sections are resolved, then the rules
+   * that span sections are checked. The entries are declared once
    * (declare_parameters()) so that `--print-parameters` and the parser
    * always agree.
    */
@@ -87,6 +89,7 @@ namespace levelsinter
     LevelSetParameters           level_set;
     RefinementParameters         refinement;
     TimeParameters               time;
+    MaterialsParameters          materials;
     PrescribedVelocityParameters velocity;
     ViscousFlowParameters        viscous_flow;
     SurfaceDiffusionParameters   surface_diffusion;
@@ -101,7 +104,14 @@ namespace levelsinter
     std::vector<std::string> warnings;
 
   private:
-    /** The rules that span sections, after every section is parsed. */
+    /** The values that depend on other sections ('automatic' choices, the
+     * axis of an axisymmetric scene as a symmetry plane), after every
+     * section is parsed. */
+    void
+    resolve_automatic_values();
+
+    /** The rules that span sections, on the resolved values; unusual but
+     * legitimate combinations add a warning. */
     void
     check_across_sections();
   };

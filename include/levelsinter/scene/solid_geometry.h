@@ -1,6 +1,7 @@
 #pragma once
 
 #include <deal.II/base/function.h>
+#include <deal.II/base/function_parser.h>
 #include <deal.II/base/point.h>
 
 #include <functional>
@@ -66,6 +67,21 @@ namespace levelsinter
                           const std::vector<double>           &lower_corner,
                           const std::vector<double>           &upper_corner,
                           const std::string                   &entry_name);
+
+  /**
+   * The muparser function of x, y[, z] (and t if @p time_dependent) whose
+   * @p n_components components @p expression gives, separated by ';'. It
+   * is evaluated once, so that an unknown symbol fails here; a failure
+   * throws std::runtime_error naming @p entry_name with the parser's
+   * diagnosis, which deal.II would otherwise print to std::cerr first.
+   */
+  template <int dim>
+  std::unique_ptr<FunctionParser<dim>>
+  make_expression_function(const std::string                   &expression,
+                           const unsigned int                   n_components,
+                           const std::map<std::string, double> &constants,
+                           const std::string                   &entry_name,
+                           const bool time_dependent = false);
 
   /**
    * The constants of an implicit function, "name = value, ..." (pi is

@@ -6,7 +6,7 @@ namespace levelsinter
 {
   using namespace dealii;
 
-  /** The `Time` subsection: end, step and its limits. */
+  /** The `Time` subsection: start, end, step and its limits. */
   struct TimeParameters
   {
     static void
@@ -16,6 +16,7 @@ namespace levelsinter
     void
     parse(ParameterHandler &prm);
 
+    double       start_time = 0; // the time of the initial shape
     double       end_time  = 0;
     double       time_step = 0; // 0: from the CFL number
     double       cfl       = 0.5;

@@ -7,7 +7,8 @@ namespace levelsinter
   using namespace dealii;
 
   /** The `Viscous flow` subsection of a scene: Newtonian particles flowing
-   * under their own surface tension (ViscousFlow mechanism). */
+   * under their own surface tension (ViscousFlow mechanism); the surface
+   * tension and the atmosphere are MaterialsParameters. */
   struct ViscousFlowParameters
   {
     enum class SurfaceTensionForm
@@ -26,15 +27,13 @@ namespace levelsinter
     static void
     declare(ParameterHandler &prm);
 
-    /** Read and check; throws std::runtime_error naming the entry. */
+    /** Read and check what needs only this section; throws
+     * std::runtime_error naming the entry. */
     void
     parse(ParameterHandler &prm);
 
     bool        enabled               = false;
-    double      surface_tension       = 1;
     double      solid_viscosity       = 1;
-    double      fluid_viscosity       = 1e-3;
-    double      fluid_compressibility = 1;
     SurfaceTensionForm surface_tension_form = SurfaceTensionForm::sharp;
     bool        semi_implicit_surface_tension = false;
     double      interface_half_width  = 1.5; // in cell sizes h_K
