@@ -80,7 +80,7 @@ add_test(NAME architecture_layers
 # Every CSV in doc/validation_data/ (outside archive/) is written by a
 # registered test (its --csv argument), every PNG there is shown in
 # doc/validation.md, and every data file, script and test the document
-# names exists.
+# names exists (the opening table's tests and sections too).
 add_test(NAME validation_index
   COMMAND ${Python3_EXECUTABLE}
     ${CMAKE_SOURCE_DIR}/scripts/check_validation_index.py ${CMAKE_SOURCE_DIR}
