@@ -27,6 +27,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt
 import matplotlib.tri as mtri
+from matplotlib.collections import LineCollection
 import numpy as np
 
 VTK_TYPES = {"Float32": "<f4", "Float64": "<f8", "Int32": "<i4",
@@ -162,9 +163,8 @@ def main():
                            cmap="coolwarm")
     if args.field != "alpha":
         fig.colorbar(colours, ax=ax, shrink=0.7, label=args.field)
-    for quad in quads:
-        xy = nodes[np.append(quad, quad[0])]
-        ax.plot(xy[:, 0], xy[:, 1], color="0.6", lw=0.2)
+    ax.add_collection(LineCollection(nodes[np.hstack([quads, quads[:, :1]])],
+                                     colors="0.6", linewidths=0.2))
     ax.tricontour(tri, fields["alpha"], levels=[0.0], colors="k",
                   linewidths=1.2)
     handles = ([plt.Line2D([], [], color="k", lw=1.2, label=args.label)]
