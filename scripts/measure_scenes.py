@@ -11,9 +11,11 @@ WORK/SCENE_npN.log. A run that ends within
 --budget seconds is measured to its end; a longer one is stopped with
 SIGTERM once the progress line has an ETA (at most --max-budget seconds)
 and projected to its end time: the wall time of the last progress line
-plus its ETA, "projected from N steps". CPU time is that of mpirun and
-its ranks (user + system, summed over the ranks), measured to the stop;
-a projected run's CPU is scaled like its wall time. The load average at
+plus its ETA, "projected from N steps" (a run whose ETA says it ends
+within half a budget more is let finish). CPU time is that of the ranks
+(user + system, summed over the ranks, sampled every 0.5 s from /proc),
+measured to the stop; a projected run's CPU is scaled like its wall
+time. The load average at
 the start is kept: on a shared machine the wall time grows with it, the
 CPU time hardly. One CSV row per run, written to OUT.csv as it goes (all
 parameter_files/*.prm but the --skip ones unless SCENEs are given).
@@ -24,7 +26,6 @@ import datetime
 import os
 import pathlib
 import re
-import resource
 import signal
 import subprocess
 import threading
@@ -43,9 +44,18 @@ def seconds(text):
     return float(value) * {"s": 1, "min": 60, "h": 3600}[unit]
 
 
-def children_cpu():
-    usage = resource.getrusage(resource.RUSAGE_CHILDREN)
-    return usage.ru_utime + usage.ru_stime
+def ranks_cpu(parent, seen):
+    """Record in seen the CPU seconds (user + system) so far of each
+    process whose parent is parent (mpirun's ranks: the ranks are not
+    waited for through mpirun, so the rusage of children misses them)."""
+    tick = os.sysconf("SC_CLK_TCK")
+    for stat in pathlib.Path("/proc").glob("[0-9]*/stat"):
+        try:
+            fields = stat.read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        if int(fields[1]) == parent:
+            seen[stat.parent.name] = (int(fields[11]) + int(fields[12])) / tick
 
 
 def measure(levelsinter, scene, ranks, args):
@@ -57,7 +67,6 @@ def measure(levelsinter, scene, ranks, args):
                         "--set", f"Output/Directory={out}",
                         "--set", "Output/Progress interval=1", str(scene)]
     load = os.getloadavg()[0]
-    cpu_before = children_cpu()
     start = time.monotonic()
     process = subprocess.Popen(command, stdout=subprocess.PIPE,
                                stderr=subprocess.STDOUT, text=True)
@@ -66,17 +75,22 @@ def measure(levelsinter, scene, ranks, args):
         target=lambda: lines.extend(iter(process.stdout.readline, "")))
     reader.start()
     stopped = False
+    cpu_seen = {}
     while process.poll() is None:
+        ranks_cpu(process.pid, cpu_seen)
         time.sleep(0.5)
         elapsed = time.monotonic() - start
-        has_eta = any((m := PROGRESS.match(line)) and m.group(5) != "-"
-                      for line in lines[-3:])
-        if not stopped and ((elapsed > args.budget and has_eta)
-                             or elapsed > args.max_budget):
+        etas = [seconds(m.group(5)) for m in map(PROGRESS.match, lines[-3:])
+                if m and m.group(5) != "-"]
+        # A run whose ETA says it ends within half the budget more is let
+        # finish.
+        if not stopped and ((elapsed > args.budget and etas and
+                             elapsed + etas[-1] > 1.5 * args.budget)
+                            or elapsed > args.max_budget):
             process.send_signal(signal.SIGTERM)
             stopped = True
     reader.join()
-    cpu = children_cpu() - cpu_before
+    cpu = sum(cpu_seen.values())
     pathlib.Path(f"{out}.log").write_text("".join(lines))
     row = {"scene": scene.name, "ranks": ranks, "cpu_s": round(cpu, 1),
            "load_1min": round(load, 1),
@@ -92,9 +106,8 @@ def measure(levelsinter, scene, ranks, args):
                    total_cpu_s=round(cpu, 1))
         return row
     # The last progress line with an ETA before the stop (the step the
-    # signal ended reports none).
-    estimated = [m for m in progress if m.group(5) != "-"
-                 and int(m.group(1)) > 0]
+    # signal ended is the last and reports 0).
+    estimated = [m for m in progress[:-1] if m.group(5) != "-"]
     if not estimated:
         row.update(status="failed" if not stopped else "no estimate",
                    steps=int(progress[-1].group(1)) if progress else 0)
