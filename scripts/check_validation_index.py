@@ -16,7 +16,11 @@ BUILD_DIR. Fails (exit code 1, one line per problem) if
   scripts/x.py that does not exist;
 - a "CSV:", "Plot:" or "Source:" line of doc/validation.md names in
   backticks a test (a name without a file extension, * and {a,b} allowed)
-  that is not registered.
+  that is not registered;
+- a row of the opening table ("## At a glance") names in its last column
+  a test that is not registered, or in its first column, in parentheses
+  at the end, a section that no heading (or bold paragraph) of the
+  document begins with.
 """
 import fnmatch
 import json
@@ -69,6 +73,49 @@ def expand(pattern):
     return [p for item in items for p in expand(head + item + tail)]
 
 
+def test_names(text):
+    """Backticked test names in text (* and {a,b} allowed)."""
+    return [name for name in re.findall(r"`([^`]+)`", text)
+            if re.fullmatch(r"\w[\w*{},.-]*", name)
+            and not re.search(r"\.(csv|png|py)$", name)]
+
+
+def check_glance_table(doc, tests, errors):
+    """The opening table: its tests registered, its sections present."""
+    start = next((i for i, line in enumerate(doc)
+                  if line.startswith("## At a glance")), None)
+    if start is None:
+        errors.append("doc/validation.md: no opening table "
+                      "('## At a glance')")
+        return
+    titles = [re.sub(r"^(#+ |\*\*)", "", line) for line in doc
+              if line.startswith("#") or line.startswith("**")]
+    rows = 0
+    for number, line in enumerate(doc[start + 1:], start + 2):
+        if line.startswith("#"):
+            break
+        cells = [c.strip() for c in line.strip().strip("|").split(" | ")]
+        if not line.startswith("| ") or len(cells) < 4 or \
+                cells[0] == "check":
+            continue
+        rows += 1
+        section = re.search(r"\(([^()]*)\)$", cells[0])
+        if section is None or not any(title.startswith(section.group(1))
+                                      for title in titles):
+            errors.append(f"doc/validation.md:{number}: the check names no "
+                          "section of the document in parentheses")
+        names = test_names(cells[-1])
+        if not names:
+            errors.append(f"doc/validation.md:{number}: the check names no "
+                          "test")
+        for name in names:
+            if not any(fnmatch.filter(tests, p) for p in expand(name)):
+                errors.append(f"doc/validation.md:{number}: names test "
+                              f"{name}, which is not registered")
+    if rows == 0:
+        errors.append("doc/validation.md: the opening table has no rows")
+
+
 def main():
     root = pathlib.Path(sys.argv[1]).resolve()
     build_dir = sys.argv[2]
@@ -118,13 +165,12 @@ def main():
                 errors.append(f"doc/validation.md:{number}: names {script}, "
                               "which does not exist")
         if line.lstrip().startswith(("CSV:", "Plot:", "Source:")):
-            for name in re.findall(r"`([^`]+)`", line):
-                if not re.fullmatch(r"\w[\w*{},.-]*", name) or re.search(
-                        r"\.(csv|png|py)$", name):
-                    continue
+            for name in test_names(line):
                 if not any(fnmatch.filter(tests, p) for p in expand(name)):
                     errors.append(f"doc/validation.md:{number}: names test "
                                   f"{name}, which is not registered")
+
+    check_glance_table(doc, tests, errors)
 
     for error in errors:
         print(error)

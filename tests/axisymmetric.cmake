@@ -37,8 +37,8 @@ add_test(NAME axisymmetric_static_sphere COMMAND ${VISCOUS} bubble
 # The same on 2 ranks at h = 1/32, 1/64: the printed digits agree with
 # 1 rank (measured); limits those of h = 1/64 (sharp 4.7e-2 / C 1.7e-2,
 # csf 6.8e-2 / 5.7e-3) + 15 %.
-add_test(NAME axisymmetric_static_sphere_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS}
-  -np 2 ${VISCOUS} bubble ${AXI_STATIC} 3,4 sharp,csf
+ranks_test(axisymmetric_static_sphere RANKS 2 COMMAND ${VISCOUS} bubble
+  ${AXI_STATIC} 3,4 sharp,csf
   --max-pressure-error 0.078 --max-C 0.02)
 
 # csf-curvature: the balanced force with the projected curvature, which
@@ -46,16 +46,12 @@ add_test(NAME axisymmetric_static_sphere_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS}
 # h = 1/64: C 1.47e-4, core error 5.06e-4, curvature error on alpha_h = 0
 # at most 2.01e-3 (second order), p error 6.40e-2. Without N_r / r the
 # curvature is half (error 50 %); without the sphere's 2 in the step that
-# carries a node's kappa to the interface, ~8 %. Limits ~20 % above.
-add_test(NAME axisymmetric_static_sphere_csf_curvature COMMAND ${VISCOUS}
+# carries a node's kappa to the interface, ~8 %. Limits ~20 % above. On 1
+# and 2 ranks: the printed digits agree to 4 digits (measured; core error
+# 5.0577e-4 and 5.0579e-4 at h = 1/64).
+ranks_test(axisymmetric_static_sphere_csf_curvature COMMAND ${VISCOUS}
   bubble ${AXI_STATIC} 3,4 csf-curvature --max-pressure-error 0.077
   --max-C 1.8e-4 --max-core-error 6e-4 --max-curvature-error 2.4e-3)
-# The same on 2 ranks: the printed digits agree with 1 rank to 4 digits
-# (measured; core error 5.0577e-4 and 5.0579e-4 at h = 1/64).
-add_test(NAME axisymmetric_static_sphere_csf_curvature_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${VISCOUS} bubble ${AXI_STATIC} 3,4 csf-curvature
-  --max-pressure-error 0.077 --max-C 1.8e-4 --max-core-error 6e-4
-  --max-curvature-error 2.4e-3)
 # With the exact kappa = 2/R the balanced force is exact in the 2 pi r
 # measure (doc/numerics.md): measured at h = 1/64 C 5.4e-10 and core
 # error 1.7e-9 (the FGMRES tolerance); kappa = 1/R would leave 50 %.

@@ -58,24 +58,18 @@ add_test(NAME reinitialisation_long_2d COMMAND ${VALIDATE} reinit
   --max-shift 0.08)
 
 # --- The application: 1 and 2 MPI ranks agree ---------------------------
-foreach(np 1 2)
-  add_test(NAME mpi_run_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-      --set "Time/Maximum steps=40" --set "Output/Directory=mpi_np${np}"
-      --set "Output/Field interval=20" ${SCENE})
-  set_tests_properties(mpi_run_np${np} PROPERTIES FIXTURES_SETUP mpi_np${np})
-endforeach()
 # GMRES stops at 1e-10 relative residual with a block-Jacobi ILU that
 # differs between 1 and 2 ranks. Those differences flip a few cells at the
 # outer edge of the band (where the refine decision is a threshold), so the
 # cell and DoF counts may differ by < 1 %; the geometry is measured on the
 # interface, far from there, and agrees to 9e-6 (measured): checked at 2e-5.
 # volume_change is a difference of nearly equal numbers; solid_volume is
-# compared instead.
-add_test(NAME mpi_1_vs_2_ranks
-  COMMAND compare_metrics mpi_np1/metrics.csv mpi_np2/metrics.csv 2e-5
-    wall_time transport_iterations cells dofs volume_change)
-set_tests_properties(mpi_1_vs_2_ranks PROPERTIES FIXTURES_REQUIRED "mpi_np1;mpi_np2")
+# compared instead. The runs write their fields (hygiene.cmake plots them).
+ranks_test(mpi_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+  --set "Time/Maximum steps=40" --set "Output/Directory=mpi_np@np@"
+  --set "Output/Field interval=20" ${SCENE}
+  AGREE mpi_np@np@/metrics.csv 2e-5 transport_iterations cells dofs
+  volume_change)
 
 # --- Architecture: no folder includes a higher layer ---------------------
 add_test(NAME architecture_layers
@@ -86,7 +80,7 @@ add_test(NAME architecture_layers
 # Every CSV in doc/validation_data/ (outside archive/) is written by a
 # registered test (its --csv argument), every PNG there is shown in
 # doc/validation.md, and every data file, script and test the document
-# names exists.
+# names exists (the opening table's tests and sections too).
 add_test(NAME validation_index
   COMMAND ${Python3_EXECUTABLE}
     ${CMAKE_SOURCE_DIR}/scripts/check_validation_index.py ${CMAKE_SOURCE_DIR}
@@ -145,7 +139,7 @@ set_tests_properties(volume_correction_auto_csf_curvature PROPERTIES
 # GMRES iterations (the transport needs 6-7 at CFL 0.5) some steps fail and
 # succeed at dt/2, and the run finishes. With 1 iteration every retry fails
 # and the run stops with the diagnosis and exit code 1.
-add_test(NAME step_retry COMMAND levelsinter
+add_test(NAME step_retry COMMAND levelsinter --overwrite
   --set "Level set/Maximum solver iterations=6" --set "Time/Maximum steps=30"
   --set "Output/Directory=step_retry" --set "Output/Field formats=none"
   ${SCENE})
@@ -168,8 +162,8 @@ add_test(NAME viscous_static_bubble_2d COMMAND ${VISCOUS} bubble
   --max-pressure-error 0.03 --max-C 0.006 --max-core-error 7e-4)
 # The same on 2 ranks (h = 1/64; measured 4.9e-2 and 9.9e-3 on 1 and 2
 # ranks alike): the numbers must not depend on the partition.
-add_test(NAME viscous_static_bubble_2d_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS}
-  -np 2 ${VISCOUS} bubble ${VISCOUS_SCENES}/static_bubble_2d.prm 3,4 sharp,csf
+ranks_test(viscous_static_bubble_2d RANKS 2 COMMAND ${VISCOUS} bubble
+  ${VISCOUS_SCENES}/static_bubble_2d.prm 3,4 sharp,csf
   --max-pressure-error 0.06 --max-C 0.012)
 # Hopper's coalescence, first 0.1 time units (neck 0.1 R -> 0.5 R) at
 # R/h = 20. Measured: max neck error 0.35 (the simulated neck lags in the
@@ -225,15 +219,15 @@ add_test(NAME viscous_hopper_curvature_refinement_2d COMMAND ${VISCOUS}
   --max-fine-cell-distance 1.0)
 # The same on 2 ranks for the first 0.02 time units: the cells flagged on
 # each rank's part of the mesh give the same refinement at the neck.
-add_test(NAME viscous_hopper_curvature_refinement_2d_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${VISCOUS} hopper
+ranks_test(viscous_hopper_curvature_refinement_2d RANKS 2 COMMAND ${VISCOUS}
+  hopper
   ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 4 --set "Time/End time=0.02"
   --set "Mesh refinement/Curvature refinement levels=2"
   --min-fine-cells 100 --max-fine-cell-distance 1.0)
 # The application runs the viscous scene (10 steps) and writes the
 # Stokes iteration column.
 add_test(NAME viscous_scene_two_cylinders COMMAND $<TARGET_FILE:levelsinter>
-  --set "Time/Maximum steps=10" --set "Output/Directory=viscous_scene"
+  --overwrite --set "Time/Maximum steps=10" --set "Output/Directory=viscous_scene"
   --set "Output/Field formats=none" ${VISCOUS_SCENES}/two_cylinders_2d.prm)
 set_tests_properties(viscous_scene_two_cylinders PROPERTIES
   PASS_REGULAR_EXPRESSION "step +10 ")
@@ -258,8 +252,8 @@ add_test(NAME viscous_static_bubble_curvature_2d COMMAND ${VISCOUS} bubble
   --max-curvature-error 5.5e-4)
 # On 2 ranks (h = 1/64; measured the same as on 1 rank to the printed 4
 # digits: C 1.122e-4, curvature error 1.492e-3); limits ~1.4x.
-add_test(NAME viscous_static_bubble_curvature_2d_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${VISCOUS} bubble
+ranks_test(viscous_static_bubble_curvature_2d RANKS 2 COMMAND ${VISCOUS}
+  bubble
   ${VISCOUS_SCENES}/static_bubble_2d.prm 3,4 csf-curvature
   --max-C 1.6e-4 --max-curvature-error 2.1e-3)
 # Semi-implicit surface tension at ten times the explicit capillary limit
@@ -290,16 +284,9 @@ add_test(NAME viscous_hopper_explicit_rejected_2d COMMAND ${VISCOUS} hopper
 # neck point's speed against Hopper's dy_n/dt. Measured on 26 Nov 2026,
 # with the mesh refined on the exact shape from the start: +0.82 % (16
 # cells per curvature radius), +1.23 % (8), +2.19 % (4), +4.2 % with 6
-# levels at 4 cells. The limit 1.5 % asks for the resolved meniscus.
-add_test(NAME viscous_hopper_neck_speed_2d COMMAND ${VISCOUS} hopper
-  ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
-  --set "Geometry/Particles=-0.2449489743, 0, 0.25; 0.2449489743, 0, 0.25"
-  --set "Mesh refinement/Curvature refinement levels=10"
-  --set "Mesh refinement/Cells per curvature radius=16"
-  --set "Time/End time=1.25e-6" --dt-factor 1e-4
-  --max-initial-neck-speed-error 0.015)
-add_test(NAME viscous_hopper_neck_speed_2d_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${VISCOUS} hopper
+# levels at 4 cells. The limit 1.5 % asks for the resolved meniscus. On 1
+# and 2 ranks.
+ranks_test(viscous_hopper_neck_speed_2d COMMAND ${VISCOUS} hopper
   ${VISCOUS_SCENES}/two_cylinders_circles_2d.prm 5
   --set "Geometry/Particles=-0.2449489743, 0, 0.25; 0.2449489743, 0, 0.25"
   --set "Mesh refinement/Curvature refinement levels=10"
@@ -317,19 +304,16 @@ add_test(NAME viscous_hopper_neck_speed_2d_np2 COMMAND ${MPIRUN}
 # measured value; over the whole run the error is 0.82 % without the volume
 # correction and 1.10 % with one curvature level less), and 1e-6 on the
 # drift (the correction's level; without it 1.1 % over the whole run).
-foreach(np 1 2)
-  add_test(NAME viscous_hopper_default_2d_np${np} COMMAND ${MPIRUN}
-    ${MPIRUN_FLAGS} -np ${np} ${VISCOUS} hopper
-    ${VISCOUS_SCENES}/two_cylinders_2d.prm 5 --set "Time/End time=0.175"
-    --max-neck-error-from-tau0.2 0.005 --max-area-drift 1e-6)
-endforeach()
+ranks_test(viscous_hopper_default_2d COMMAND ${VISCOUS} hopper
+  ${VISCOUS_SCENES}/two_cylinders_2d.prm 5 --set "Time/End time=0.175"
+  --max-neck-error-from-tau0.2 0.005 --max-area-drift 1e-6)
 # The hopper mode writes and reads back viscous_validation_output/
 # hopper_levelN/metrics.csv: runs of it must not overlap.
 set_tests_properties(viscous_hopper_2d viscous_solver_ratio_1e-6_2d
   viscous_solver_ratio_1e-6_r80_2d
   viscous_hopper_volume_correction_2d viscous_hopper_semi_implicit_2d
   viscous_hopper_explicit_rejected_2d viscous_hopper_curvature_refinement_2d
-  viscous_hopper_curvature_refinement_2d_np2 viscous_hopper_neck_speed_2d
+  viscous_hopper_curvature_refinement_2d_np2 viscous_hopper_neck_speed_2d_np1
   viscous_hopper_neck_speed_2d_np2 viscous_hopper_default_2d_np1
   viscous_hopper_default_2d_np2
   PROPERTIES RESOURCE_LOCK viscous_hopper_output)
@@ -341,7 +325,7 @@ add_test(NAME viscous_static_bubble_2d_direct COMMAND ${VISCOUS} bubble
   --set "Viscous flow/Solver=direct" --max-pressure-error 0.11 --max-C 0.023)
 # 3D with two symmetry planes and one pinned mode: two steps run.
 add_test(NAME viscous_scene_two_spheres_3d COMMAND $<TARGET_FILE:levelsinter>
-  --set "Mesh refinement/Maximum level=3" --set "Time/Maximum steps=2"
+  --overwrite --set "Mesh refinement/Maximum level=3" --set "Time/Maximum steps=2"
   --set "Output/Directory=viscous_scene_3d" --set "Output/Field formats=none"
   ${VISCOUS_SCENES}/two_spheres_3d.prm)
 set_tests_properties(viscous_scene_two_spheres_3d PROPERTIES
@@ -406,13 +390,10 @@ add_test(NAME viscous_two_spheres_coalescence_3d COMMAND ${VISCOUS} spheres
 # R/h = 5 the neck is not in the asymptotic range, doc/validation.md "With
 # curvature refinement"). Limit 0.3395, halfway: a run whose refinement
 # does not take effect fails.
-foreach(np 1 2)
-  add_test(NAME viscous_two_spheres_curvature_refinement_3d_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${VISCOUS} spheres ${SPHERES} 3
-      ${SPHERES_VC} --set "Time/End time=0.125"
-      --set "Mesh refinement/Curvature refinement levels=1"
-      --max-neck_tau0.5 0.3395)
-endforeach()
+ranks_test(viscous_two_spheres_curvature_refinement_3d COMMAND ${VISCOUS}
+  spheres ${SPHERES} 3 ${SPHERES_VC} --set "Time/End time=0.125"
+  --set "Mesh refinement/Curvature refinement levels=1"
+  --max-neck_tau0.5 0.3395)
 # FGMRES count in 3D at R/h = 10, eta_f/eta_s = 1e-6, first 2 solves:
 # measured 28 / 28. Limit 31: the count at R/h = 20 is 32.
 add_test(NAME viscous_solver_3d_r10 COMMAND ${VISCOUS} spheres ${SPHERES} 4
@@ -525,7 +506,7 @@ add_test(NAME surface_diffusion_two_grains_length_2d COMMAND ${SD_VALIDATE}
 # of dt = max(1e-7, 0.1 t), the remaining time spread evenly, computed
 # outside the code), against 100 at the fixed first step.
 add_test(NAME surface_diffusion_relative_time_step COMMAND levelsinter
-  --set "Time/Time step=1e-7" --set "Time/Relative time step=0.1"
+  --overwrite --set "Time/Time step=1e-7" --set "Time/Relative time step=0.1"
   --set "Time/CFL number=0" --set "Time/End time=1e-5"
   --set "Output/Directory=relative_time_step"
   --set "Output/Field formats=none" ${TWO_GRAINS})
@@ -560,17 +541,6 @@ add_test(NAME surface_diffusion_mullins_sphere_3d COMMAND ${SD_VALIDATE}
   --max-volume-change 0.006)
 # Two spheres at h = 1/40 (R/h = 8), 4 steps, on 1 and 2 ranks: the
 # geometry must not depend on the partition.
-foreach(np 1 2)
-  add_test(NAME surface_diffusion_3d_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-      --set "Mesh refinement/Maximum level=2"
-      --set "Level set/Filter thickness=0.15" --set "Mesh refinement/Band width=0.1"
-      --set "Time/Maximum steps=4" --set "Output/Metrics interval=1"
-      --set "Output/Directory=sd_3d_np${np}" --set "Output/Field formats=none"
-      ${GRAINS_3D})
-  set_tests_properties(surface_diffusion_3d_np${np} PROPERTIES
-    FIXTURES_SETUP sd_3d_np${np})
-endforeach()
 # FGMRES stops at a relative 1e-8 with an AMG that depends on the
 # partition: neck, volume and area agree to 2.1e-8 (measured); checked at
 # 1e-7. max_velocity (the largest nodal speed) differs by up to 4 % in the
@@ -578,13 +548,11 @@ endforeach()
 # so it is not compared; nor are times, iterations and mesh counts.
 # centre_distance_change is, like volume_change, a difference of nearly
 # equal numbers (5e-6 here): centre_distance is compared instead.
-add_test(NAME surface_diffusion_3d_1_vs_2_ranks
-  COMMAND compare_metrics sd_3d_np1/metrics.csv sd_3d_np2/metrics.csv 1e-7
-    wall_time surface_diffusion_solve_cpu_time surface_diffusion_iterations
-    transport_iterations cells dofs volume_change max_velocity
-    centre_distance_change)
-set_tests_properties(surface_diffusion_3d_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "sd_3d_np1;sd_3d_np2")
+ranks_agree(surface_diffusion_3d sd_3d ${GRAINS_3D} 1e-7
+  "surface_diffusion_iterations;transport_iterations;cells;dofs;volume_change;max_velocity;centre_distance_change"
+  --set "Mesh refinement/Maximum level=2"
+  --set "Level set/Filter thickness=0.15" --set "Mesh refinement/Band width=0.1"
+  --set "Time/Maximum steps=4" --set "Output/Metrics interval=1")
 # The neck mode in 3D: the two spheres at R/h = 8, dt = 0.01 (t* = 6.25e-6
 # per step), 10 steps. Measured: neck 0.04967 -> 0.05150 (x 1.037; the
 # growth starts slowly, doc/validation.md), volume change -6.0e-4, centre
@@ -601,8 +569,7 @@ add_test(NAME surface_diffusion_two_grains_3d COMMAND ${SD_VALIDATE} neck
 # Measured: smallest neck 0.06854 -> 0.07051 (x 1.029), volume change
 # -1.36e-3, centre distance change -7.7e-4 d0 (0.012 h). Limits: growth
 # x 1.015, volume 2e-3 (1.5x), centre distance 1.5e-3 d0 (2x; 0.024 h).
-add_test(NAME surface_diffusion_packing_3d_np2
-  COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 ${SD_VALIDATE} neck
-    ${CMAKE_SOURCE_DIR}/parameter_files/packing_surface_diffusion_3d.prm 2
-    --sample-interval 2 --csv packing_3d.csv
-    --min-neck-growth 1.015 --max-volume-change 2e-3 --max-centre-shift 1.5e-3)
+ranks_test(surface_diffusion_packing_3d RANKS 2 COMMAND ${SD_VALIDATE} neck
+  ${CMAKE_SOURCE_DIR}/parameter_files/packing_surface_diffusion_3d.prm 2
+  --sample-interval 2 --csv packing_3d.csv
+  --min-neck-growth 1.015 --max-volume-change 2e-3 --max-centre-shift 1.5e-3)

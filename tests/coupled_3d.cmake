@@ -27,24 +27,10 @@ add_test(NAME coupled_two_spheres_3d COMMAND ${SD_VALIDATE} neck
 # every column but the times and the iteration counts (the ILU of the xi
 # extension is per rank: 27 against 42-43 GMRES iterations) agrees to
 # 2.8e-7 (max_velocity; the neck to 3e-9). Checked at 2e-5.
-foreach(np 1 2)
-  add_test(NAME coupled_two_spheres_3d_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-      --overwrite --set "Time/Maximum steps=3" --set "Output/Metrics interval=1"
-      --set "Output/Directory=coupled_3d_np${np}"
-      --set "Output/Field formats=none" ${COUPLED_PAIR_3D_COARSE}
-      ${COUPLED_PAIR_3D})
-  set_tests_properties(coupled_two_spheres_3d_np${np} PROPERTIES
-    FIXTURES_SETUP coupled_3d_np${np})
-endforeach()
-add_test(NAME coupled_two_spheres_3d_1_vs_2_ranks
-  COMMAND compare_metrics coupled_3d_np1/metrics.csv
-    coupled_3d_np2/metrics.csv 2e-5
-    wall_time transport_iterations surface_diffusion_iterations
-    surface_diffusion_solve_cpu_time
-    volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)
-set_tests_properties(coupled_two_spheres_3d_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "coupled_3d_np1;coupled_3d_np2")
+ranks_agree(coupled_two_spheres_3d coupled_3d ${COUPLED_PAIR_3D} 2e-5
+  "transport_iterations;surface_diffusion_iterations;volume_diffusion_mechanics_iterations;volume_diffusion_xi_iterations"
+  --set "Time/Maximum steps=3" --set "Output/Metrics interval=1"
+  ${COUPLED_PAIR_3D_COARSE})
 
 # The study: the scene as it is (R/h = 16, lambda = 6), 100 steps to
 # t = 0.1 s, sampled every 5 steps, the metrics every step. Measured:
@@ -65,12 +51,11 @@ set_tests_properties(study_coupled_two_spheres_3d PROPERTIES
 set(COUPLED_PACKING_27_COARSE
   --set "Mesh refinement/Maximum level=2"
   --set "Volume diffusion/Interior offset=1")
-add_test(NAME coupled_packing_27_3d_np2
-  COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 $<TARGET_FILE:levelsinter>
-    --overwrite --set "Time/Maximum steps=2" --set "Output/Field formats=none"
-    --set "Analysis/Packing analysis=false"
-    --set "Output/Directory=coupled_packing_27" ${COUPLED_PACKING_27_COARSE}
-    ${COUPLED_PACKING_27})
+ranks_test(coupled_packing_27_3d RANKS 2 COMMAND $<TARGET_FILE:levelsinter>
+  --overwrite --set "Time/Maximum steps=2" --set "Output/Field formats=none"
+  --set "Analysis/Packing analysis=false"
+  --set "Output/Directory=coupled_packing_27" ${COUPLED_PACKING_27_COARSE}
+  ${COUPLED_PACKING_27})
 set_tests_properties(coupled_packing_27_3d_np2 PROPERTIES
   PASS_REGULAR_EXPRESSION "done: 2 steps")
 # Its cost per step and phase (CPU of each timer section): the same 2

@@ -16,19 +16,10 @@ foreach(case "2;6;2d" "3;5;3d" "2;6;mirror_2d")
   if(name MATCHES mirror)
     set(extra --mirror 1)
   endif()
-  foreach(np 1 2)
-    add_test(NAME particle_centres_shift_${name}_np${np}
-      COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${CENTRES} shift ${dim}
-        ${level} ${extra} --max-bound-ratio 1
-        --csv particle_centres_${name}_np${np}.csv)
-    set_tests_properties(particle_centres_shift_${name}_np${np} PROPERTIES
-      FIXTURES_SETUP particle_centres_${name}_np${np})
-  endforeach()
-  add_test(NAME particle_centres_shift_${name}_1_vs_2_ranks
-    COMMAND compare_metrics particle_centres_${name}_np1.csv
-      particle_centres_${name}_np2.csv 1e-9 error)
-  set_tests_properties(particle_centres_shift_${name}_1_vs_2_ranks PROPERTIES
-    FIXTURES_REQUIRED "particle_centres_${name}_np1;particle_centres_${name}_np2")
+  ranks_test(particle_centres_shift_${name} COMMAND ${CENTRES} shift ${dim}
+    ${level} ${extra} --max-bound-ratio 1
+    --csv particle_centres_${name}_np@np@.csv
+    AGREE particle_centres_${name}_np@np@.csv 1e-9 error)
 endforeach()
 
 # Two circles (spheres) R = 0.15 carried apart at U = 0.1 each through the
@@ -67,13 +58,10 @@ endforeach()
 add_executable(volume_diffusion_output volume_diffusion_output.cc)
 target_link_libraries(volume_diffusion_output levelsinter_lib)
 deal_ii_setup_target(volume_diffusion_output)
-foreach(np 1 2)
-  add_test(NAME volume_diffusion_output_velocity_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np}
-      $<TARGET_FILE:volume_diffusion_output> ${VD_GRAINS}
-      --set "Time/Maximum steps=4" --set "Output/Field interval=2"
-      --set "Output/Directory=vd_output_np${np}")
-endforeach()
+ranks_test(volume_diffusion_output_velocity
+  COMMAND $<TARGET_FILE:volume_diffusion_output> ${VD_GRAINS}
+  --set "Time/Maximum steps=4" --set "Output/Field interval=2"
+  --set "Output/Directory=vd_output_np@np@")
 
 # --- Volume diffusion: stiff cases ---------------------------------------
 # eta_f / (G dt) at dt = 2e-3 fixed (G = 156e3 MPa: eta_f = ratio x 312).

@@ -1,22 +1,6 @@
 # --- Run hygiene: output directory, run record, stop signals, plots -------
 set(HYGIENE ${CMAKE_CURRENT_SOURCE_DIR}/hygiene)
 
-# The tests that run the application into a fixed directory here would be
-# refused by a second ctest ("holds an earlier run"): their directories
-# are cleared first. A new such test belongs in both lists.
-set(APPLICATION_RUNS mpi_run_np1 mpi_run_np2 step_retry
-  viscous_scene_two_cylinders viscous_scene_two_spheres_3d
-  surface_diffusion_relative_time_step surface_diffusion_3d_np1
-  surface_diffusion_3d_np2)
-set(APPLICATION_OUTPUTS mpi_np1 mpi_np2 step_retry viscous_scene
-  viscous_scene_3d relative_time_step sd_3d_np1 sd_3d_np2)
-add_test(NAME clear_application_outputs
-  COMMAND ${CMAKE_COMMAND} -E rm -rf ${APPLICATION_OUTPUTS})
-set_tests_properties(clear_application_outputs PROPERTIES
-  FIXTURES_SETUP application_outputs)
-set_property(TEST ${APPLICATION_RUNS} APPEND PROPERTY
-  FIXTURES_REQUIRED application_outputs)
-
 # An earlier run is refused, untouched (bad_input.cmake leaves a
 # metrics.csv in out/); --overwrite or Output/Overwrite replaces it.
 bad_input_test(earlier_run "holds an earlier run (metrics.csv)"
@@ -98,7 +82,12 @@ stop_signal_test(stop_signal_term_mpirun_np2 TERM 1
 add_test(NAME plot_metrics COMMAND sh -c
   "rm -f plot_metrics.png && ${CMAKE_SOURCE_DIR}/scripts/plot_metrics.py mpi_np1 mpi_np2 --y solid_volume interface_area cells -o plot_metrics.png && test -s plot_metrics.png")
 set_tests_properties(plot_metrics PROPERTIES
-  FIXTURES_REQUIRED "mpi_np1;mpi_np2")
+  FIXTURES_REQUIRED "mpi_run_np1;mpi_run_np2")
+# scripts/plot_field.py on the last fields of the 2-rank run (step 40): the PVTU (two
+# pieces joined) and the HDF5 file give the same nodes and alpha, and a PNG.
+add_test(NAME plot_field COMMAND ${HYGIENE}/plot_field_check.py
+  ${CMAKE_SOURCE_DIR}/scripts/plot_field.py mpi_np2/fields_00002)
+set_tests_properties(plot_field PROPERTIES FIXTURES_REQUIRED mpi_run_np2)
 
 # The ETA for fixed and growing steps against the exact time left.
 add_executable(remaining_time_test remaining_time_test.cc)

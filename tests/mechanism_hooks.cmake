@@ -12,23 +12,16 @@ set(HOOKS $<TARGET_FILE:mechanism_hooks>)
 # interpolation on the coarsest mesh each point passed through leaves
 # (orders 2 and 3). Limits 1.8 and 2.8: a lost field, a wrong DoFHandler or
 # missing hanging-node values give order 0 or less.
-add_test(NAME mechanism_hooks_transfer_2d COMMAND ${HOOKS} transfer 3 4
+ranks_test(mechanism_hooks_transfer_2d COMMAND ${HOOKS} transfer 3 4
   --min-order-q1 1.8 --min-order-q2 2.8)
-add_test(NAME mechanism_hooks_transfer_2d_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${HOOKS} transfer 3 4 --min-order-q1 1.8
-  --min-order-q2 2.8)
 # Surface diffusion keeps v_s^{n-1} (Eq. 81) across adaptations: two
 # grains, 10 steps, the mesh adapted before steps 3, 5, 7, 9. Measured
 # |v_s^{n-1} - v_s^n| / |v_s^n| after each adaptation: 0.083, 0.093, 0.078,
 # 0.129 (1 and 2 ranks alike). A dropped v_s^{n-1} fails (empty), a zero or
 # misplaced one gives 1 or more; limit 0.3.
-add_test(NAME mechanism_hooks_sd_lagged_2d COMMAND ${HOOKS} lagged
+ranks_test(mechanism_hooks_sd_lagged_2d COMMAND ${HOOKS} lagged
   ${TWO_GRAINS} 10 --max-lag-change 0.3 --set "Output/Field formats=none"
-  --set "Output/Directory=mechanism_hooks_lagged")
-add_test(NAME mechanism_hooks_sd_lagged_2d_np2 COMMAND ${MPIRUN}
-  ${MPIRUN_FLAGS} -np 2 ${HOOKS} lagged ${TWO_GRAINS} 10 --max-lag-change 0.3
-  --set "Output/Field formats=none"
-  --set "Output/Directory=mechanism_hooks_lagged_np2")
+  --set "Output/Directory=mechanism_hooks_lagged_np@np@")
 # The static bubble writes the Stokes pressure (viscous_flow_pressure in
 # fields_00000.pvtu), and the written field (the same DataOut, read back
 # from its patches) jumps by gamma / R = 4.5 between the nodal means over
@@ -36,10 +29,7 @@ add_test(NAME mechanism_hooks_sd_lagged_2d_np2 COMMAND ${MPIRUN}
 # h = 1/64 (sharp form): relative error 6.37e-4 on 1 and 2 ranks, as
 # viscous_static_bubble_2d's core error (1.5e-4 at h = 1/128, second
 # order). Limit 1e-3.
-add_test(NAME mechanism_hooks_static_bubble_pressure_2d COMMAND ${HOOKS}
+ranks_test(mechanism_hooks_static_bubble_pressure_2d COMMAND ${HOOKS}
   bubble ${CMAKE_SOURCE_DIR}/parameter_files/static_bubble_2d.prm
-  --max-jump-error 1e-3 --set "Output/Directory=mechanism_hooks_bubble")
-add_test(NAME mechanism_hooks_static_bubble_pressure_2d_np2 COMMAND
-  ${MPIRUN} ${MPIRUN_FLAGS} -np 2 ${HOOKS} bubble
-  ${CMAKE_SOURCE_DIR}/parameter_files/static_bubble_2d.prm
-  --max-jump-error 1e-3 --set "Output/Directory=mechanism_hooks_bubble_np2")
+  --max-jump-error 1e-3
+  --set "Output/Directory=mechanism_hooks_bubble_np@np@")

@@ -151,11 +151,10 @@ add_test(NAME packing_neck_periodic COMMAND ${PACK_TEST} neck:1e-5
 # diffusion): 2 steps at h_min = 0.05 (15453 DoFs) on 2 ranks; measured
 # 18 s wall with the R-tree neck search (170 s before it, at a similar
 # load of 14-25).
-add_test(NAME packing_scene_27_3d_np2
-  COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2 $<TARGET_FILE:levelsinter>
-    --set "Mesh refinement/Maximum level=2" --set "Time/Maximum steps=2"
-    --overwrite --set "Output/Field formats=none"
-    --set "Output/Directory=packing_scene_27"
-    ${CMAKE_SOURCE_DIR}/parameter_files/packing_27_surface_diffusion_3d.prm)
+ranks_test(packing_scene_27_3d RANKS 2 COMMAND $<TARGET_FILE:levelsinter>
+  --set "Mesh refinement/Maximum level=2" --set "Time/Maximum steps=2"
+  --overwrite --set "Output/Field formats=none"
+  --set "Output/Directory=packing_scene_27"
+  ${CMAKE_SOURCE_DIR}/parameter_files/packing_27_surface_diffusion_3d.prm)
 set_tests_properties(packing_scene_27_3d_np2 PROPERTIES
   PASS_REGULAR_EXPRESSION "done: 2 steps")

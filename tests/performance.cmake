@@ -98,3 +98,18 @@ endfunction()
 packing_154_run(surface_diffusion packing_154_surface_diffusion_3d.prm
   "Time/End time=0.06")
 packing_154_run(coupled packing_154_coupled_3d.prm "Time/Maximum steps=12")
+
+# The wall and CPU time of every scene in parameter_files/ on 1 and 2 ranks
+# as shipped (doc/user_guide.md, "Scenes"): short scenes to the end, long
+# ones projected from their first 20-90 s (scripts/measure_scenes.py).
+# The 154-particle packings and the 1.4 M-DoF transport benchmark are left
+# out (hours, 16 GB; doc/performance.md and doc/validation.md give their
+# cost). About 40 minutes.
+add_test(NAME benchmark_scene_times
+  COMMAND ${CMAKE_SOURCE_DIR}/scripts/measure_scenes.py
+    $<TARGET_FILE:levelsinter> --budget 20 --max-budget 90
+    --skip packing_154_surface_diffusion_3d.prm packing_154_coupled_3d.prm
+    transport_benchmark_3d.prm
+    --work ${CMAKE_CURRENT_BINARY_DIR}/scene_times
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/scene_times.csv)
+set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)

@@ -16,18 +16,8 @@ add_test(NAME pores_tracking COMMAND ${PORES} tracking)
 # differences of nearly equal numbers (density_error) are compared
 # through the values themselves, timings not at all.
 function(pores_on_1_and_2_ranks name)
-  foreach(np 1 2)
-    add_test(NAME ${name}_np${np}
-      COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${PORES} ${ARGN}
-        --csv ${name}_np${np}.csv)
-    set_tests_properties(${name}_np${np} PROPERTIES
-      FIXTURES_SETUP ${name}_np${np})
-  endforeach()
-  add_test(NAME ${name}_1_vs_2_ranks
-    COMMAND compare_metrics ${name}_np1.csv ${name}_np2.csv 1e-9
-      analysis_seconds density_error)
-  set_tests_properties(${name}_1_vs_2_ranks PROPERTIES
-    FIXTURES_REQUIRED "${name}_np1;${name}_np2")
+  ranks_test(${name} COMMAND ${PORES} ${ARGN} --csv ${name}_np@np@.csv
+    AGREE ${name}_np@np@.csv 1e-9 density_error)
 endfunction()
 
 # A disc of radius 0.3 with no, one and two holes of radius 0.08. Two holes

@@ -122,15 +122,6 @@ shapes_bad_input(shapes_with_slotted_disk
 # 1 and 2 ranks: the distance is evaluated point by point, the measures
 # are sums over cells (in another order with 2 ranks). Measured: equal in
 # all 10 digits of the tables; compared at 1e-9 (rounding of the sums).
-foreach(np 1 2)
-  add_test(NAME shapes_superellipse_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} ${SHAPES} measures
-      superellipse 5,6 --csv shapes_superellipse_np${np}.csv)
-  set_tests_properties(shapes_superellipse_np${np} PROPERTIES
-    FIXTURES_SETUP shapes_superellipse_np${np})
-endforeach()
-add_test(NAME shapes_superellipse_1_vs_2_ranks
-  COMMAND compare_metrics shapes_superellipse_np1.csv
-    shapes_superellipse_np2.csv 1e-9 seconds)
-set_tests_properties(shapes_superellipse_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "shapes_superellipse_np1;shapes_superellipse_np2")
+ranks_test(shapes_superellipse COMMAND ${SHAPES} measures superellipse 5,6
+  --csv shapes_superellipse_np@np@.csv
+  AGREE shapes_superellipse_np@np@.csv 1e-9)

@@ -40,17 +40,9 @@ add_test(NAME conformation_rotation_3d
   COMMAND conformation_field 3 3,4 --max-error 0.35 --min-order 0.4)
 # 1 and 2 ranks: GMRES to 1e-12 relative; the errors agree to all printed
 # digits (measured); compared at 1e-8.
-foreach(np 1 2)
-  add_test(NAME conformation_rotation_2d_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:conformation_field>
-      2 5,6 --csv conformation_rotation_np${np}.csv)
-  set_tests_properties(conformation_rotation_2d_np${np} PROPERTIES
-    FIXTURES_SETUP conformation_np${np})
-endforeach()
-add_test(NAME conformation_rotation_1_vs_2_ranks COMMAND compare_metrics
-  conformation_rotation_np1.csv conformation_rotation_np2.csv 1e-8 max_gmres)
-set_tests_properties(conformation_rotation_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "conformation_np1;conformation_np2")
+ranks_test(conformation_rotation_2d COMMAND $<TARGET_FILE:conformation_field>
+  2 5,6 --csv conformation_rotation_np@np@.csv
+  AGREE conformation_rotation_np@np@.csv 1e-8 max_gmres)
 # The convergence study behind doc/validation.md.
 add_test(NAME study_conformation_rotation_2d COMMAND conformation_field 2
   4,5,6,7 --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/conformation_rotation_2d.csv)

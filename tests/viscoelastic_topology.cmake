@@ -86,17 +86,10 @@ topology_check(viscoelastic_topology_pair_newtonian_2d_check
 # one (an AMG/ILU that depends on the partition). Not compared: times,
 # iteration counts, volume_change and open_porosity (differences of
 # nearly equal numbers; the ring has no open pore: 4e-15). Limit 1e-6.
-foreach(np 1 2)
-  topology_run(viscoelastic_topology_ring_np${np} ${np} ${VE_LEVEL_2D_5}
-    --set "Time/Maximum steps=10" ${VE_RING})
-endforeach()
-add_test(NAME viscoelastic_topology_ring_1_vs_2_ranks COMMAND compare_metrics
-  ve_topology_viscoelastic_topology_ring_np1/metrics.csv
-  ve_topology_viscoelastic_topology_ring_np2/metrics.csv 1e-6
-  wall_time stokes_solve_cpu stokes_iterations viscoelastic_iterations
-  transport_iterations volume_change open_porosity)
-set_tests_properties(viscoelastic_topology_ring_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "viscoelastic_topology_ring_np1;viscoelastic_topology_ring_np2")
+ranks_agree(viscoelastic_topology_ring ve_topology_ring ${VE_RING} 1e-6
+  "stokes_iterations;viscoelastic_iterations;transport_iterations;volume_change;open_porosity"
+  ${VE_LEVEL_2D_5} --set "Time/Maximum steps=10"
+  --set "Output/Progress interval=0")
 # The 3D packing at De = 1 on 2 ranks, R/h = 5, the first 12 steps (to
 # t = 0.012, the start of the melt's elastic jump). Measured: neck 0.336 ->
 # 0.553 at t = 0.01, largest |volume change| 5.9e-4 (the first step),

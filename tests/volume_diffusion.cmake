@@ -59,17 +59,9 @@ add_test(NAME xi_thick_bar_2d COMMAND ${XI} neck 7 --max-unsourced 0
 add_test(NAME volume_diffusion_parameters COMMAND ${XI} parameters)
 # 1 and 2 ranks: GMRES to 1e-10 with ILU per rank; the errors agree to
 # 1e-6 relative (measured 1.5e-7 in 2D, 0 in 3D).
-foreach(np 1 2)
-  add_test(NAME xi_mode2_2d_np${np} COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np}
-    ${XI} field 2 mode2 5,6 --csv xi_mode2_2d_np${np}.csv --max-error 3e-3)
-  add_test(NAME xi_radial_3d_np${np} COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np}
-    ${XI} field 3 radial 4,5 --csv xi_radial_3d_np${np}.csv --max-error 3e-3)
-  set_tests_properties(xi_mode2_2d_np${np} xi_radial_3d_np${np} PROPERTIES
-    FIXTURES_SETUP xi_np${np})
-endforeach()
-foreach(case mode2_2d radial_3d)
-  add_test(NAME xi_${case}_1_vs_2_ranks COMMAND compare_metrics
-    xi_${case}_np1.csv xi_${case}_np2.csv 1e-6)
-  set_tests_properties(xi_${case}_1_vs_2_ranks PROPERTIES
-    FIXTURES_REQUIRED "xi_np1;xi_np2")
-endforeach()
+ranks_test(xi_mode2_2d COMMAND ${XI} field 2 mode2 5,6
+  --csv xi_mode2_2d_np@np@.csv --max-error 3e-3
+  AGREE xi_mode2_2d_np@np@.csv 1e-6)
+ranks_test(xi_radial_3d COMMAND ${XI} field 3 radial 4,5
+  --csv xi_radial_3d_np@np@.csv --max-error 3e-3
+  AGREE xi_radial_3d_np@np@.csv 1e-6)

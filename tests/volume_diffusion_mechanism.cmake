@@ -20,22 +20,9 @@ add_test(NAME volume_diffusion_two_grains_2d COMMAND ${SD_VALIDATE} neck
 # and area agree to 7.0e-6 and 7.9e-7; max_velocity and the volume
 # correction speed (a difference of nearly equal volumes) to 5.6e-5 (not
 # compared, nor iterations, times and mesh counts); checked at 2e-5.
-foreach(np 1 2)
-  add_test(NAME volume_diffusion_np${np}
-    COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np ${np} $<TARGET_FILE:levelsinter>
-      --overwrite --set "Time/Maximum steps=10" --set "Output/Metrics interval=1"
-      --set "Output/Directory=vd_np${np}" --set "Output/Field formats=none"
-      ${VD_GRAINS})
-  set_tests_properties(volume_diffusion_np${np} PROPERTIES
-    FIXTURES_SETUP vd_np${np})
-endforeach()
-add_test(NAME volume_diffusion_1_vs_2_ranks
-  COMMAND compare_metrics vd_np1/metrics.csv vd_np2/metrics.csv 2e-5
-    wall_time transport_iterations cells dofs volume_change max_velocity
-    volume_correction_speed
-    volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)
-set_tests_properties(volume_diffusion_1_vs_2_ranks PROPERTIES
-  FIXTURES_REQUIRED "vd_np1;vd_np2")
+ranks_agree(volume_diffusion vd ${VD_GRAINS} 2e-5
+  "transport_iterations;cells;dofs;volume_change;max_velocity;volume_correction_speed;volume_diffusion_mechanics_iterations;volume_diffusion_xi_iterations"
+  --set "Time/Maximum steps=10" --set "Output/Metrics interval=1")
 
 # The combinations SceneParameters refuses.
 bad_input_test(volume_diffusion_with_viscous_flow "Volume diffusion/Enabled"

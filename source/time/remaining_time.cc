@@ -2,9 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace levelsinter
 {
+  double
+  RemainingTime::StepLimits::at(const double s) const
+  {
+    return std::min(cap,
+                    first_step > 0 ? std::max(first_step, relative * s) :
+                                     std::numeric_limits<double>::infinity());
+  }
+
   void
   RemainingTime::add_step(const double t, const double dt, const double wall)
   {
@@ -15,70 +24,125 @@ namespace levelsinter
 
   namespace
   {
-    // Steps from t0 to t1 along the line dt = dt0 + b (t - t0), positive on
-    // [t0, t1]: int dt'/(dt0 + b (t' - t0)) = (t1 - t0)/dt0 log1p(x)/x,
-    // x = b (t1 - t0)/dt0.
-    double
-    steps_along_line(const double t0,
-                     const double t1,
-                     const double dt0,
-                     const double b)
+    // A step law dt = a + b s of the start time s.
+    struct Line
     {
-      const double x = b * (t1 - t0) / dt0;
-      return (t1 - t0) / dt0 * (x == 0 ? 1 : std::log1p(x) / x);
+      double a;
+      double b;
+
+      double
+      operator()(const double s) const
+      {
+        return a + b * s;
+      }
+    };
+
+    // Steps from s0 to s1 along a law positive there: each step multiplies
+    // dt by 1 + b, so their number is ln(dt(s1)/dt(s0))/ln(1 + b).
+    double
+    steps_along(const Line &line, const double s0, const double s1)
+    {
+      if (line.b == 0)
+        return (s1 - s0) / line.a;
+      return std::log(line(s1) / line(s0)) / std::log1p(line.b);
+    }
+
+    // The least-squares line through (s, dt), or the mean if the s are
+    // equal.
+    Line
+    fit(const std::vector<std::pair<double, double>> &points)
+    {
+      const double n      = points.size();
+      double       mean_s = 0, mean_dt = 0;
+      for (const auto &[s, dt] : points)
+        {
+          mean_s += s / n;
+          mean_dt += dt / n;
+        }
+      double covariance = 0, variance = 0;
+      for (const auto &[s, dt] : points)
+        {
+          covariance += (s - mean_s) * (dt - mean_dt);
+          variance += (s - mean_s) * (s - mean_s);
+        }
+      const double b = variance > 0 ? covariance / variance : 0;
+      return {mean_dt - b * mean_s, b};
     }
   } // namespace
 
   double
-  RemainingTime::estimate(const double end_time,
-                          const double steps_left,
-                          const double max_step) const
+  RemainingTime::estimate(const double      end_time,
+                          const double      steps_left,
+                          const StepLimits &limits) const
   {
     if (steps.size() < 2)
       return -1;
-    const double n = steps.size();
-    // Least-squares line dt = a + b t through the window.
-    double mean_t = 0, mean_dt = 0;
-    for (const auto &s : steps)
+    const double t = steps.back().t;
+    if (!(t < end_time) || steps_left <= 0)
+      return 0;
+    const double infinity = std::numeric_limits<double>::infinity();
+
+    // The laws a step can follow: the scene's limits, and the CFL number's
+    // where the recent steps stayed below those limits (by more than the
+    // last steps' evening out to end at the end time).
+    std::vector<Line> laws;
+    if (std::isfinite(limits.cap))
+      laws.push_back({limits.cap, 0});
+    if (limits.first_step > 0)
+      laws.push_back({limits.first_step, 0});
+    if (limits.first_step > 0 && limits.relative > 0)
+      laws.push_back({0, limits.relative});
+    std::vector<std::pair<double, double>> below_limits;
+    for (const auto &step : steps)
+      if (step.dt < 0.98 * limits.at(step.t - step.dt))
+        below_limits.emplace_back(step.t - step.dt, step.dt);
+    bool cfl = !below_limits.empty();
+    Line cfl_law{0, 0};
+    if (cfl)
       {
-        mean_t += s.t / n;
-        mean_dt += s.dt / n;
+        cfl_law = fit(below_limits);
+        // A CFL step that shrinks (an interface that speeds up) is not
+        // extrapolated to zero: its present value is kept.
+        if (cfl_law.b <= -1 || cfl_law(t) <= 0 || cfl_law(end_time) <= 0)
+          cfl_law = {std::max(cfl_law(t), below_limits.back().second), 0};
+        laws.push_back(cfl_law);
       }
-    double covariance = 0, variance = 0;
-    for (const auto &s : steps)
+    const auto step_at = [&](const double s) {
+      return std::min(limits.at(s), cfl ? cfl_law(s) : infinity);
+    };
+
+    // The step law is piecewise one of the laws, changing where two cross.
+    std::vector<double> breaks = {t, end_time};
+    for (unsigned int i = 0; i < laws.size(); ++i)
+      for (unsigned int j = i + 1; j < laws.size(); ++j)
+        if (laws[i].b != laws[j].b)
+          {
+            const double s = (laws[j].a - laws[i].a) / (laws[i].b - laws[j].b);
+            if (s > t && s < end_time)
+              breaks.push_back(s);
+          }
+    std::sort(breaks.begin(), breaks.end());
+    double n_steps = 0;
+    for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
       {
-        covariance += (s.t - mean_t) * (s.dt - mean_dt);
-        variance += (s.t - mean_t) * (s.t - mean_t);
+        const double s0 = breaks[k], s1 = breaks[k + 1];
+        if (!(s1 > s0))
+          continue;
+        const double dt = step_at((s0 + s1) / 2);
+        if (!std::isfinite(dt))
+          return -1;
+        const Line &law = *std::min_element(
+          laws.begin(), laws.end(), [&](const Line &x, const Line &y) {
+            return std::abs(x((s0 + s1) / 2) - dt) <
+                   std::abs(y((s0 + s1) / 2) - dt);
+          });
+        n_steps += steps_along(law, s0, s1);
       }
-    const double b       = variance > 0 ? covariance / variance : 0;
-    const double t       = steps.back().t;
-    const double dt_now  = mean_dt + b * (t - mean_t);
-    const double dt_end  = mean_dt + b * (end_time - mean_t);
-    const double to_go   = std::max(0., end_time - t);
-    double       n_steps = to_go / std::min(mean_dt, max_step);
-    // A line that reaches zero before T is not trusted (a shrinking CFL
-    // step): the mean step is used instead. Otherwise the line is followed
-    // up to the step cap (Time/Time step with a CFL number), e.g. the
-    // start-up of a CFL step whose first steps grow fast, and the capped
-    // part counts its length / cap.
-    if (dt_now > 0 && dt_end > 0)
-      {
-        // Where the line crosses the cap, if it moves towards it.
-        const bool capped_first = dt_now >= max_step;
-        double     crossing     = end_time;
-        if (capped_first ? b < 0 : b > 0 && std::isfinite(max_step))
-          crossing = std::clamp(t + (max_step - dt_now) / b, t, end_time);
-        const double line_from  = capped_first ? crossing : t;
-        const double line_to    = capped_first ? end_time : crossing;
-        n_steps = (to_go - (line_to - line_from)) / max_step;
-        if (line_to > line_from)
-          n_steps += steps_along_line(line_from,
-                                      line_to,
-                                      dt_now + b * (line_from - t),
-                                      b);
-      }
+    if (!std::isfinite(n_steps))
+      return -1;
     const double wall_per_step =
-      (steps.back().wall - steps.front().wall) / (n - 1);
-    return std::min(n_steps, steps_left) * wall_per_step;
+      (steps.back().wall - steps.front().wall) / (steps.size() - 1);
+    // A part of a step left is one more step.
+    return std::min(std::ceil(n_steps - 1e-9), steps_left) * wall_per_step;
   }
 } // namespace levelsinter

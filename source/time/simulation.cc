@@ -603,16 +603,17 @@ namespace levelsinter
         const double steps_left =
           scene.time.max_steps > 0 ? double(scene.time.max_steps) - step :
                                      std::numeric_limits<double>::max();
-        // Time/Time step caps a CFL step unless a relative step grows it.
-        const double max_step =
-          scene.time.time_step > 0 && scene.time.relative_time_step == 0 ?
-            scene.time.time_step :
-            std::numeric_limits<double>::infinity();
+        // The step's limits as choose_time_step() applies them; the CFL
+        // part is extrapolated from the recent steps.
+        RemainingTime::StepLimits limits{scene.time.time_step,
+                                         scene.time.relative_time_step};
+        for (const auto &mechanism : mechanisms)
+          limits.cap = std::min(limits.cap, mechanism->time_step_limit(alpha));
         const double eta =
           final_step ? 0. :
                        remaining_time.estimate(scene.time.end_time,
                                                steps_left,
-                                               max_step);
+                                               limits);
         pcout << "step " << std::setw(6) << step << "  t = " << std::setw(11)
               << std::setprecision(5) << t << " / " << scene.time.end_time
               << "  dt = " << std::setw(10) << std::setprecision(3) << dt

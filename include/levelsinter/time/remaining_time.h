@@ -8,17 +8,36 @@ namespace levelsinter
   /**
    * The wall time a run still needs, for the progress line's ETA. The
    * fraction of the end time reached, or of the steps taken, misleads when
-   * the steps grow (Time/Relative time step: dt = r t, so a step late in
-   * the run covers far more time than an early one at the same cost). So
-   * over a window of recent steps the step is fitted as a line in t,
-   * dt = a + b t (b = 0 for a fixed or steady CFL step, a = 0 for a purely
-   * relative one), the number of steps left to the end time follows from
-   * integrating dn = dt'/(a + b t'), and each costs the recent wall time per
-   * step.
+   * the steps grow: a relative step (dt = r t) or a CFL step whose speed
+   * falls covers far more time late in the run than early at the same
+   * cost. So the steps left are counted along the step's own law: the
+   * limits the scene sets (a fixed or relative step, the mechanisms'
+   * limits) are known; the CFL part, where it limits the recent steps, is
+   * fitted as a line in the step's start time, dt = a + b s. On a piece
+   * where one such law dt = a + b s decides, each step multiplies dt by
+   * 1 + b, so the count from s0 to s1 is exact:
+   * ln(dt(s1)/dt(s0)) / ln(1 + b), or (s1 - s0)/a for b = 0. Each step
+   * left costs the mean wall time of the recent steps.
    */
   class RemainingTime
   {
   public:
+    /**
+     * What limits a step besides the CFL number, as Simulation chooses it:
+     * max(first_step, relative t) if first_step > 0 (Time/Time step,
+     * Time/Relative time step), and at most cap (the mechanisms' limits).
+     */
+    struct StepLimits
+    {
+      double first_step = 0;
+      double relative   = 0;
+      double cap        = std::numeric_limits<double>::infinity();
+
+      /** The largest step from time @p s; infinite if nothing limits it. */
+      double
+      at(const double s) const;
+    };
+
     /** Call after each step with the time reached, the step and the wall
      *  time since the start. */
     void
@@ -26,14 +45,15 @@ namespace levelsinter
 
     /**
      * Wall seconds to reach @p end_time or to take @p steps_left more steps,
-     * whichever comes first, with steps of at most @p max_step; negative
-     * while fewer than two steps are known.
+     * whichever comes first, with steps limited by @p limits and, where the
+     * recent steps were below those limits (the CFL number), by the fitted
+     * trend of those steps; negative while it cannot be estimated (fewer
+     * than two steps known, or no law that reaches the end time).
      */
     double
-    estimate(const double end_time,
-             const double steps_left,
-             const double max_step =
-               std::numeric_limits<double>::infinity()) const;
+    estimate(const double        end_time,
+             const double        steps_left,
+             const StepLimits   &limits) const;
 
   private:
     struct Step
