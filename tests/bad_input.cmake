@@ -1,5 +1,6 @@
 # Run levelsinter on a bad input and check that it fails the documented way:
-# exit code != 0, one plain line on stderr, "levelsinter: error: ...",
+# exit code != 0, one plain line on stderr, "levelsinter: error: ..." (or
+# "levelsinter-pack: error: ..." for the packing generator),
 # containing EXPECT (nothing before it: no library's dump, no raw bytes of
 # the input), and an existing output directory left untouched.
 #   cmake -DLEVELSINTER=... -DARGS="a;b" -DEXPECT="text" -DWORK=dir -P bad_input.cmake
@@ -17,7 +18,7 @@ if(found EQUAL -1)
   message(FATAL_ERROR "stderr lacks '${EXPECT}':\n${err}")
 endif()
 # One line of printable text.
-if(NOT err MATCHES "^levelsinter: error: [ -~\t]*\n$")
+if(NOT err MATCHES "^levelsinter(-pack)?: error: [ -~\t]*\n$")
   message(FATAL_ERROR
     "stderr is not one printable line 'levelsinter: error: ...':\n${err}")
 endif()

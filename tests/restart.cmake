@@ -62,8 +62,13 @@ restart_test(restart_two_grains_sd_np1_np2 ${TWO_GRAINS} 1 2 1e-6
 # on the elastic problem's DoFs, StateTransfer's block path) in the
 # checkpoint: the two grains of the paper's Sect. 6.6, 20 steps (the mesh
 # adapted every 2nd), a checkpoint every 5; the displacement's history
-# enters every later elastic solve. Not compared besides the above: the
-# solvers' iterations.
+# enters every later elastic solve; the volume correction's volume to keep
+# (Mechanism::save) too. Not compared besides the above: the solvers'
+# iterations. Measured largest relative difference 5.6e-7 (1 -> 1) and
+# 2.3e-7 (1 -> 2, in max_velocity): the elastic solve starts from zero
+# after a restart and converges to its tolerance in one iteration more or
+# less. Without the kept volume to keep the difference was 1e-5 (the
+# correction then keeps the resumed volume). Limit 5e-6 on both.
 set(RESTART_VD_IGNORED ${RESTART_IGNORED} volume_diffusion_mechanics_iterations
   volume_diffusion_xi_iterations)
 set(RESTART_VD_ARGS
@@ -71,10 +76,10 @@ set(RESTART_VD_ARGS
   --set "Output/Field formats=none" --set "Output/Progress interval=0")
 restart_test(restart_two_grains_vd_np1_np1
   ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_volume_diffusion_2d.prm 1 1
-  1e-7 "${RESTART_VD_IGNORED}" ${RESTART_VD_ARGS})
+  5e-6 "${RESTART_VD_IGNORED}" ${RESTART_VD_ARGS})
 restart_test(restart_two_grains_vd_np1_np2
   ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_volume_diffusion_2d.prm 1 2
-  1e-6 "${RESTART_VD_IGNORED};cells;dofs" ${RESTART_VD_ARGS})
+  5e-6 "${RESTART_VD_IGNORED};cells;dofs" ${RESTART_VD_ARGS})
 # --resume takes the scene from the run directory, and needs a run there.
 bad_input_test(resume_with_scene "give no scene file" --resume out ${SCENE})
 bad_input_test(resume_no_run "resume_nowhere/parameters.prm"

@@ -13,6 +13,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
@@ -219,17 +220,13 @@ namespace levelsinter
       const SmoothedHeaviside heaviside(
         interface_half_width_cells *
         finest_cell_size(alpha.dof_handler().get_triangulation()));
-      const MPI_Comm                comm = alpha.dof_handler().get_communicator();
-      TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+      TrilinosWrappers::MPI::Vector owned(
+        alpha.locally_owned(), alpha.dof_handler().get_communicator());
       for (const auto i : alpha.locally_owned())
         owned(i) = heaviside.solid_fraction(interface_level_set(i));
-      owned.compress(VectorOperation::insert);
-      alpha.constraints().distribute(owned);
-      TrilinosWrappers::MPI::Vector solid_fraction(alpha.locally_owned(),
-                                                   alpha.locally_relevant(),
-                                                   comm);
-      solid_fraction = owned;
-      return solid_fraction;
+      return ghosted_from_owned(owned,
+                                alpha.constraints(),
+                                alpha.locally_relevant());
     }
   } // namespace
 

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/ghosted_vector.h>
 
 #include <levelsinter/level_set/point_value.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
@@ -77,18 +78,14 @@ namespace levelsinter
     // "Viscoelastic melts"). So the stretch is full where alpha <= 0 and
     // fades to none at 2E: H_s(alpha - E).
     const SmoothedHeaviside heaviside(interface_half_width * h_band);
-    const MPI_Comm          comm = alpha.dof_handler().get_communicator();
-    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+    TrilinosWrappers::MPI::Vector owned(
+      alpha.locally_owned(), alpha.dof_handler().get_communicator());
     for (const auto i : alpha.locally_owned())
       owned(i) = heaviside.solid_fraction(alpha.alpha()(i) -
                                           heaviside.half_width());
-    owned.compress(VectorOperation::insert);
-    alpha.constraints().distribute(owned);
-    TrilinosWrappers::MPI::Vector weight(alpha.locally_owned(),
-                                         alpha.locally_relevant(),
-                                         comm);
-    weight = owned;
-    return weight;
+    return ghosted_from_owned(owned,
+                              alpha.constraints(),
+                              alpha.locally_relevant());
   }
 
   template <int dim>
@@ -124,13 +121,10 @@ namespace levelsinter
           owned[d + 1](i) = std::sqrt(lambda[d]);
       }
     for (unsigned int k = 0; k < owned.size(); ++k)
-      {
-        owned[k].compress(VectorOperation::insert);
-        alpha.constraints().distribute(owned[k]);
-        auto &nodal = k == 0 ? trace_c : stretches[k - 1];
-        nodal.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
-        nodal = owned[k];
-      }
+      (k == 0 ? trace_c : stretches[k - 1]) =
+        ghosted_from_owned(owned[k],
+                           alpha.constraints(),
+                           alpha.locally_relevant());
     max_trace_c = Utilities::MPI::max(largest, comm);
   }
 
