@@ -9,7 +9,7 @@ Runs `mpirun -np N LEVELSINTER SCENE` (the scene as shipped, its fields
 included, progress every step) into WORK/SCENE_npN, its output in
 WORK/SCENE_npN.log. A run that ends within
 --budget seconds is measured to its end; a longer one is stopped with
-SIGTERM once the progress line has an ETA (at most --max-budget seconds)
+SIGUSR1 once the progress line has an ETA (at most --max-budget seconds)
 and projected to its end time: the wall time of the last progress line
 plus its ETA, "projected from N steps" (a run whose ETA says it ends
 within half a budget more is let finish). CPU time is that of the ranks
@@ -17,8 +17,10 @@ within half a budget more is let finish). CPU time is that of the ranks
 measured to the stop; a projected run's CPU is scaled like its wall
 time. The load average at
 the start is kept: on a shared machine the wall time grows with it, the
-CPU time hardly. One CSV row per run, written to OUT.csv as it goes (all
-parameter_files/*.prm but the --skip ones unless SCENEs are given).
+CPU time hardly. One CSV row per scene and rank count, written to OUT.csv
+as it goes (all parameter_files/*.prm but the --skip ones unless SCENEs
+are given); the rows OUT.csv holds for scenes or rank counts not measured
+this time are kept.
 """
 import argparse
 import csv
@@ -87,7 +89,9 @@ def measure(levelsinter, scene, ranks, args):
         if not stopped and ((elapsed > args.budget and etas and
                              elapsed + etas[-1] > 1.5 * args.budget)
                             or elapsed > args.max_budget):
-            process.send_signal(signal.SIGTERM)
+            # SIGUSR1: mpirun passes it on and every rank stops cleanly
+            # after its step (SIGTERM makes mpirun end the ranks at once).
+            process.send_signal(signal.SIGUSR1)
             stopped = True
     reader.join()
     cpu = sum(cpu_seen.values())
@@ -106,8 +110,9 @@ def measure(levelsinter, scene, ranks, args):
                    total_cpu_s=round(cpu, 1))
         return row
     # The last progress line with an ETA before the stop (the step the
-    # signal ended is the last and reports 0).
-    estimated = [m for m in progress[:-1] if m.group(5) != "-"]
+    # signal ended, if it printed one, reports 0).
+    estimated = [m for m in progress
+                 if m.group(5) != "-" and seconds(m.group(5)) > 0]
     if not estimated:
         row.update(status="failed" if not stopped else "no estimate",
                    steps=int(progress[-1].group(1)) if progress else 0)
@@ -134,23 +139,40 @@ def main():
     parser.add_argument("--budget", type=float, default=60)
     parser.add_argument("--max-budget", type=float, default=300)
     parser.add_argument("--work", default="measure_scenes")
-    args = parser.parse_args()
+    # Scenes may follow the options (the usage line's order).
+    args = parser.parse_intermixed_args()
     pathlib.Path(args.work).mkdir(parents=True, exist_ok=True)
     root = pathlib.Path(__file__).resolve().parent.parent
     scenes = ([pathlib.Path(s) for s in args.scenes] if args.scenes else
               sorted(p for p in (root / "parameter_files").glob("*.prm")
                      if p.name not in args.skip))
-    with open(args.csv, "w", newline="") as f:
+    # The rows of scenes and rank counts not measured this time are kept,
+    # so that measuring a few scenes again does not drop the others.
+    table = {}
+    if pathlib.Path(args.csv).is_file():
+        with open(args.csv, newline="") as f:
+            for row in csv.DictReader(f):
+                table[(row["scene"], int(row["ranks"]))] = row
+    for scene in scenes:
+        for ranks in args.ranks:
+            row = measure(str(pathlib.Path(args.levelsinter).resolve()),
+                          scene.resolve(), ranks, args)
+            table[(scene.name, ranks)] = row
+            write_table(args.csv, table)
+            print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS),
+                  flush=True)
+
+
+def write_table(path, table):
+    """Write the rows of table (keyed by scene and ranks) sorted, through
+    a temporary file renamed into place."""
+    partial = pathlib.Path(str(path) + ".partial")
+    with open(partial, "w", newline="") as f:
         writer = csv.DictWriter(f, fieldnames=COLUMNS)
         writer.writeheader()
-        for scene in scenes:
-            for ranks in args.ranks:
-                row = measure(str(pathlib.Path(args.levelsinter).resolve()),
-                              scene.resolve(), ranks, args)
-                writer.writerow(row)
-                f.flush()
-                print(", ".join(f"{k} {row.get(k, '')}" for k in COLUMNS),
-                      flush=True)
+        for key in sorted(table):
+            writer.writerow({k: table[key].get(k, "") for k in COLUMNS})
+    partial.replace(path)
 
 
 if __name__ == "__main__":

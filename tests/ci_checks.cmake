@@ -85,11 +85,18 @@ add_test(NAME validation_index
   COMMAND ${Python3_EXECUTABLE}
     ${CMAKE_SOURCE_DIR}/scripts/check_validation_index.py ${CMAKE_SOURCE_DIR}
     ${CMAKE_BINARY_DIR} ${CMAKE_CTEST_COMMAND})
+# The time columns of the user guide's scene table are those of
+# doc/validation_data/scene_times.csv (scripts/scene_times_table.py).
+add_test(NAME scene_times_table
+  COMMAND ${Python3_EXECUTABLE}
+    ${CMAKE_SOURCE_DIR}/scripts/scene_times_table.py ${CMAKE_SOURCE_DIR}
+    --check)
 # A study does not replace a longer history there with a shorter one
 # unless LEVELSINTER_REPLACE_SHORTER=1 (scripts/validation_data.py).
 add_test(NAME validation_data_keeps_longer_history
   COMMAND ${CMAKE_CURRENT_SOURCE_DIR}/validation_data_guard_test.sh
-    ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/validation_data_guard)
+    ${CMAKE_SOURCE_DIR} ${CMAKE_CURRENT_BINARY_DIR}/validation_data_guard
+    $<TARGET_FILE:pore_analysis>)
 
 # --- Command line and bad input ------------------------------------------
 add_test(NAME help COMMAND levelsinter --help)

@@ -48,7 +48,10 @@
 #include <levelsinter/level_set/velocity_field.h>
 #include <levelsinter/mechanics/conformation_field.h>
 
+#include "study_support.h"
+
 #include <cmath>
+#include <memory>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -232,18 +235,18 @@ namespace
 
   template <int dim>
   int
-  study(const Case                       flow,
-        const std::vector<unsigned int> &levels,
-        const double                     max_error,
-        const double                     min_order,
-        const std::string               &csv)
+  convergence_study(const Case                       flow,
+                    const std::vector<unsigned int> &levels,
+                    const double                     max_error,
+                    const double                     min_order,
+                    const std::string               &csv)
   {
     const bool root = Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-    std::ofstream out;
+    std::unique_ptr<study::CsvFile> out;
     if (root && !csv.empty())
       {
-        out.open(csv);
-        out << "level,h,steps,max_gmres,max_error\n";
+        out = std::make_unique<study::CsvFile>(csv);
+        out->stream() << "level,h,steps,max_gmres,max_error\n";
       }
     std::vector<double> errors;
     for (const unsigned int level : levels)
@@ -261,8 +264,7 @@ namespace
                         << std::log2(errors[errors.size() - 2] / error);
             std::cout << std::endl;
             if (out)
-              out << level << "," << h << "," << steps << ","
-                  << iterations << "," << error << "\n";
+              out->row(level, h, steps, iterations, error);
           }
       }
     int status = 0;
@@ -319,6 +321,7 @@ main(int argc, char **argv)
       std::cerr << "the axisymmetric case is 2D (r, z)\n";
       return 2;
     }
-  return dim == 2 ? study<2>(flow, levels, max_error, min_order, csv) :
-                    study<3>(flow, levels, max_error, min_order, csv);
+  return dim == 2 ?
+           convergence_study<2>(flow, levels, max_error, min_order, csv) :
+           convergence_study<3>(flow, levels, max_error, min_order, csv);
 }

@@ -89,8 +89,10 @@ add_test(NAME plot_field COMMAND ${HYGIENE}/plot_field_check.py
   ${CMAKE_SOURCE_DIR}/scripts/plot_field.py mpi_np2/fields_00002)
 set_tests_properties(plot_field PROPERTIES FIXTURES_REQUIRED mpi_run_np2)
 
-# The ETA for fixed and growing steps against the exact time left.
+# The ETA for fixed and growing steps and a rising cost per step against
+# the exact time left, and on the default scene's steps replayed.
 add_executable(remaining_time_test remaining_time_test.cc)
 target_link_libraries(remaining_time_test levelsinter_lib)
 deal_ii_setup_target(remaining_time_test)
-add_test(NAME remaining_time COMMAND remaining_time_test)
+add_test(NAME remaining_time COMMAND remaining_time_test
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/two_cylinders_2d_steps.csv)

@@ -62,6 +62,18 @@ add_test(NAME parameters_particle_header_order COMMAND levelsinter
   ${TWO_PARTICLES})
 set_tests_properties(parameters_particle_header_order PROPERTIES
   PASS_REGULAR_EXPRESSION "done: 1 steps")
+# A relative path given with --set is the shell's, relative to the working
+# directory (here tests/scenes), not to the scene file's folder
+# (parameter_files/, which holds no such file).
+add_test(NAME parameters_set_path_relative_to_working_directory
+  COMMAND levelsinter --set "Geometry/Particles="
+  --set "Geometry/Particle file=reordered_particles.csv"
+  --set "Time/Maximum steps=1" --set "Output/Field formats=none" --overwrite
+  --set "Output/Directory=${CMAKE_CURRENT_BINARY_DIR}/parameters_set_path"
+  ${TWO_PARTICLES}
+  WORKING_DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/scenes)
+set_tests_properties(parameters_set_path_relative_to_working_directory
+  PROPERTIES PASS_REGULAR_EXPRESSION "done: 1 steps")
 bad_input_test(particle_file_header
   "header_particles.csv', line 2: the header 'x,y,radius' must name"
   ${BAD}/bad_header.prm)

@@ -4,6 +4,11 @@
 //   pore_analysis holes DIM N_HOLES LEVELS [options]
 //     a particle (disc, sphere) of radius 0.3 minus N_HOLES balls of radius
 //     0.08: N_HOLES closed pores of exact volume, one open pore outside.
+//     With --planes K (1 <= K < DIM) the particle and its holes are centred
+//     on the K lower box faces normal to e_1, ..., e_K (the box a quarter
+//     or half of the scene, those faces symmetry planes): each closed pore
+//     is cut by K planes, its exact volume that of the part in the box,
+//     and its sphericity (that of the whole pore the mirrors make) 1.
 //   pore_analysis lattice DIM N SPACING RADIUS LEVELS [options]
 //     N^DIM balls on a simple cubic lattice centred in the unit box: pores,
 //     relative density in the centres' bounding box, necks, coordination.
@@ -96,16 +101,21 @@ namespace
   class ParticleWithHoles : public Function<dim>
   {
   public:
-    ParticleWithHoles(const double R, const std::vector<Point<dim>> &holes,
-                      const double r)
-      : R(R), holes(holes), r(r)
+    ParticleWithHoles(const double                   R,
+                      const Point<dim>              &centre,
+                      const std::vector<Point<dim>> &holes,
+                      const double                   r)
+      : R(R)
+      , centre(centre)
+      , holes(holes)
+      , r(r)
     {}
 
     double
     value(const Point<dim> &p, const unsigned int = 0) const override
     {
       // Solid = particle minus holes: max(d_particle, -d_holes).
-      double phi = p.distance(uniform_point<dim>(0.5)) - R;
+      double phi = p.distance(centre) - R;
       for (const auto &c : holes)
         phi = std::max(phi, r - p.distance(c));
       return phi;
@@ -113,6 +123,7 @@ namespace
 
   private:
     double                  R;
+    Point<dim>              centre;
     std::vector<Point<dim>> holes;
     double                  r;
   };
@@ -123,17 +134,38 @@ namespace
              const std::vector<std::string> &args)
   {
     const study::Options options = study::parse_options(args, 5);
-    const double R = 0.3, r = 0.08;
+    const double       R = 0.3, r = 0.08;
+    const auto         planes_option = options.limits.find("planes");
+    const unsigned int planes =
+      planes_option == options.limits.end() ? 0 : planes_option->second;
+    if (planes >= dim)
+      throw std::runtime_error("--planes must be below the dimension");
+    // The particle's centre: on the symmetry planes x_k = 0, k < planes.
+    Point<dim>                      centre = uniform_point<dim>(0.5);
+    std::vector<types::boundary_id> symmetry;
+    for (unsigned int k = 0; k < planes; ++k)
+      {
+        centre[k] = 0;
+        symmetry.push_back(2 * k);
+      }
     std::vector<Point<dim>> holes;
     for (unsigned int k = 0; k < n_holes; ++k)
       {
-        Point<dim> c = uniform_point<dim>(0.5);
-        c[0] += (k == 0 ? -0.12 : 0.12);
-        // Off the symmetry planes of the mesh, the general case.
-        c[1] += 0.013 * (k + 1);
+        Point<dim> c = centre;
+        // Off the planes of the mesh, the general case; on the symmetry
+        // planes, apart along the last axis.
+        const double apart = k == 0 ? -0.12 : 0.12, off = 0.013 * (k + 1);
+        if (planes == 0)
+          {
+            c[0] += apart;
+            c[1] += off;
+          }
+        else
+          c[dim - 1] += apart + off;
         holes.push_back(c);
       }
-    const double exact = dim == 2 ? M_PI * r * r : 4. / 3 * M_PI * r * r * r;
+    const double exact =
+      (dim == 2 ? M_PI * r * r : 4. / 3 * M_PI * r * r * r) / (1u << planes);
     Table table({"level", "h", "closed_pores", "open_pores", "volume_error",
                  "min_sphericity", "open_volume"},
                 options.csv);
@@ -141,8 +173,11 @@ namespace
       {
         parallel::distributed::Triangulation<dim> tria(MPI_COMM_WORLD);
         LevelSetField<dim>                        level_set(tria);
-        build(tria, level_set, ParticleWithHoles<dim>(R, holes, r), level);
-        const auto pores = find_pores(level_set, {}, BoundingBox<dim>(
+        build(tria,
+              level_set,
+              ParticleWithHoles<dim>(R, centre, holes, r),
+              level);
+        const auto pores = find_pores(level_set, symmetry, BoundingBox<dim>(
                                                        std::make_pair(
                                                          uniform_point<dim>(0),
                                                          uniform_point<dim>(1))));

@@ -54,6 +54,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <memory>
 
 using namespace levelsinter;
 
@@ -357,19 +358,19 @@ namespace
           return ((b0 * b0 - a0 * a0) / w - w) / 2;
         };
         double max_error = 0;
-        std::ofstream series;
+        std::unique_ptr<study::CsvFile> series;
         if (study::is_root() && !options.csv.empty())
           {
-            series.open(options.csv + ".level" + std::to_string(level) +
-                        ".csv");
-            series << "time,a,a_exact\n";
+            series = std::make_unique<study::CsvFile>(
+              options.csv + ".level" + std::to_string(level) + ".csv");
+            series->stream() << "time,a,a_exact\n";
           }
         for (unsigned int i = 0; i < t.size(); ++i)
           {
             max_error =
               std::max(max_error, std::abs(a_of(i) - exact_a(t[i])) / a0);
-            if (series.is_open())
-              series << t[i] << ',' << a_of(i) << ',' << exact_a(t[i]) << '\n';
+            if (series)
+              series->row(t[i], a_of(i), exact_a(t[i]));
           }
         const unsigned int last = t.size() - 1;
         table.add({double(level),
@@ -612,21 +613,22 @@ namespace
                            .holes[0];
             }
 
-        std::ofstream series;
         if (study::is_root() && !options.csv.empty())
           {
-            series.open(options.csv + ".level" + std::to_string(level) +
-                        ".csv");
-            series << "time,area_change";
+            study::CsvFile series(options.csv + ".level" +
+                                  std::to_string(level) + ".csv");
+            auto          &out = series.stream();
+            out << "time,area_change";
             for (unsigned int k = 1; k <= run.holes.size(); ++k)
-              series << ",area_" << k << ",roundness_" << k;
-            series << '\n' << std::setprecision(10);
+              out << ",area_" << k << ",roundness_" << k;
+            out << '\n' << std::setprecision(10);
             for (unsigned int i = 0; i < run.time.size(); ++i)
               {
-                series << run.time[i] << ',' << run.area_change[i];
+                out << run.time[i] << ',' << run.area_change[i];
                 for (const auto &hole : run.holes)
-                  series << ',' << hole.area[i] << ',' << hole.roundness[i];
-                series << '\n';
+                  out << ',' << hole.area[i] << ',' << hole.roundness[i];
+                out << '\n';
+                series.end_row();
               }
           }
         double max_drift = 0;

@@ -2,10 +2,13 @@
 
 // Shared by the validation drivers: the options of a study (limits, CSV
 // file, scene overrides), a table printed on rank 0 and optionally written
-// as CSV, and the checks of measured values against limits.
+// as CSV (CsvFile's rule for doc/validation_data), and the checks of
+// measured values against limits.
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+
+#include "study_support.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +17,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -147,10 +151,10 @@ namespace levelsinter::study
         return;
       if (!csv.empty())
         {
-          file.open(csv);
+          file = std::make_unique<CsvFile>(csv);
           for (unsigned int i = 0; i < columns.size(); ++i)
-            file << (i ? "," : "") << columns[i];
-          file << "\n";
+            file->stream() << (i ? "," : "") << columns[i];
+          file->stream() << "\n";
         }
       for (unsigned int i = 0; i < columns.size(); ++i)
         std::cout << std::setw(widths[i]) << columns[i];
@@ -166,12 +170,16 @@ namespace levelsinter::study
       for (unsigned int i = 0; i < row.size(); ++i)
         {
           std::cout << std::setw(widths[i]) << std::setprecision(5) << row[i];
-          if (file.is_open())
-            file << (i ? "," : "") << std::setprecision(10) << row[i];
+          if (file)
+            file->stream() << (i ? "," : "") << std::setprecision(10)
+                           << row[i];
         }
       std::cout << std::endl;
-      if (file.is_open())
-        file << "\n" << std::flush;
+      if (file)
+        {
+          file->stream() << "\n";
+          file->end_row();
+        }
     }
 
     /**
@@ -209,6 +217,6 @@ namespace levelsinter::study
     std::vector<std::string>         columns;
     std::vector<int>                 widths;
     std::vector<std::vector<double>> rows;
-    std::ofstream                    file;
+    std::unique_ptr<CsvFile>         file;
   };
 } // namespace levelsinter::study

@@ -22,7 +22,7 @@ foreach(case forms-giesekus forms-xpp relax-step)
 endforeach()
 
 add_executable(conformation_field conformation_field.cc)
-target_link_libraries(conformation_field levelsinter_lib)
+target_link_libraries(conformation_field levelsinter_study)
 deal_ii_setup_target(conformation_field)
 
 # The conformation field in a solid-body rotation (closed form in the

@@ -65,6 +65,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <complex>
 #include <filesystem>
 #include <fstream>
@@ -488,17 +489,16 @@ namespace
   }
 
   // The neck history of one level as CSV next to the study's table.
-  std::ofstream
+  std::unique_ptr<study::CsvFile>
   open_series(const Options     &options,
               const unsigned int level,
               const std::string &header)
   {
-    std::ofstream series;
-    if (root && !options.csv.empty())
-      {
-        series.open(options.csv + ".level" + std::to_string(level) + ".csv");
-        series << header << '\n';
-      }
+    if (!root || options.csv.empty())
+      return nullptr;
+    auto series = std::make_unique<study::CsvFile>(
+      options.csv + ".level" + std::to_string(level) + ".csv");
+    series->stream() << header << '\n';
     return series;
   }
 
@@ -708,9 +708,8 @@ namespace
             if (tau >= 0.2 - 1e-9)
               max_error_from_02 = std::max(max_error_from_02, final_error);
             taus.push_back(tau);
-            if (series.is_open())
-              series << tau << ',' << neck[i] / R << ',' << y_exact / R
-                     << '\n';
+            if (series)
+              series->row(tau, neck[i] / R, y_exact / R);
           }
         // Relative neck error at each early time (NaN when the run does
         // not span it).
@@ -812,8 +811,8 @@ namespace
             const double tau = (t0 + t[i]) * gamma / (eta * a);
             const double x   = neck[i] / a;
             taus.push_back(tau);
-            if (series.is_open())
-              series << tau << ',' << x << ',' << std::sqrt(1.5 * tau) << '\n';
+            if (series)
+              series->row(tau, x, std::sqrt(1.5 * tau));
             if (x < 0.3)
               {
                 log_t.push_back(std::log(tau));
@@ -885,7 +884,7 @@ namespace
       {
         double        area0 = 0, area = 0;
         std::vector<std::pair<double, double>> history;
-        std::ofstream series = open_series(options, level, "time,pore_area");
+        const auto series = open_series(options, level, "time,pore_area");
         const auto    run     = run_level<dim>(
           scene_file,
           level,
@@ -903,16 +902,16 @@ namespace
               std::make_pair(Point<dim>(centroid - half), centroid + half));
             area0 = area = interface_measures::atmosphere_volume(
               simulation.level_set(), window);
-            if (series.is_open())
-              series << "0," << area0 << '\n';
+            if (series)
+              series->row(0, area0);
             simulation.set_step_observer(
               [&, window](unsigned int,
                           const double              t,
                           const LevelSetField<dim> &alpha) {
                 area = interface_measures::atmosphere_volume(alpha, window);
                 history.emplace_back(t, area);
-                if (series.is_open())
-                  series << t << ',' << area << '\n';
+                if (series)
+                  series->row(t, area);
               });
           });
         double closure = std::numeric_limits<double>::quiet_NaN();
@@ -1020,9 +1019,9 @@ namespace
         unsigned int peak = 0;
         for (unsigned int i = 0; i < t.size(); ++i)
           {
-            if (series.is_open())
-              series << t[i] << ',' << neck[i] << ',' << curvature[i] << ','
-                     << neck_trace[i] << ',' << max_trace[i] << '\n';
+            if (series)
+              series->row(
+                t[i], neck[i], curvature[i], neck_trace[i], max_trace[i]);
             if (curvature[i] > curvature[peak])
               peak = i;
           }
@@ -1101,12 +1100,13 @@ namespace
           throw std::runtime_error("bubble-time: the run made no step");
         if (root && !options.csv.empty())
           {
-            std::ofstream series(options.csv + ".level" +
-                                 std::to_string(level) + ".csv");
-            series << "step,time,C,area_error\n" << std::setprecision(10);
+            study::CsvFile series(options.csv + ".level" +
+                                  std::to_string(level) + ".csv");
+            series.stream() << "step,time,C,area_error\n"
+                            << std::setprecision(10);
             for (unsigned int i = 1; i < steps.size(); ++i)
-              series << steps[i] << ',' << metrics.column("time")[i] << ','
-                     << C[i - 1] << ',' << area[i] << '\n';
+              series.row(steps[i], metrics.column("time")[i], C[i - 1],
+                         area[i]);
           }
         const double R = scene.geometry.particles[0][dim];
         table.add({double(level), h, R / h, double(summary.steps),

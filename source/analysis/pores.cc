@@ -20,12 +20,22 @@ namespace levelsinter
   double
   Pore<dim>::sphericity() const
   {
-    if (on_box)
+    unsigned int planes = 0;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        const bool low  = box_faces & (1u << (2 * d)),
+                   high = box_faces & (1u << (2 * d + 1));
+        if (low && high)
+          return std::numeric_limits<double>::quiet_NaN();
+        planes += low || high;
+      }
+    if (open)
       return std::numeric_limits<double>::quiet_NaN();
     if (area <= 0)
       return 0;
-    return dim == 3 ? 36 * M_PI * volume * volume / (area * area * area) :
-                      4 * M_PI * volume / (area * area);
+    return (dim == 3 ? 36 * M_PI * volume * volume / (area * area * area) :
+                       4 * M_PI * volume / (area * area)) /
+           (1u << planes);
   }
 
   template <int dim>
@@ -73,7 +83,8 @@ namespace levelsinter
     {
       double             volume = 0, area = 0, volume_in_window = 0;
       Tensor<1, dim>     first_moment;
-      bool               open = false, on_box = false;
+      bool               open      = false;
+      unsigned int       box_faces = 0; // bit b: box face b
       static constexpr unsigned int size = 6 + dim;
 
       void
@@ -85,7 +96,7 @@ namespace levelsinter
                     area,
                     volume_in_window,
                     double(open),
-                    double(on_box)});
+                    double(box_faces)});
         for (unsigned int d = 0; d < dim; ++d)
           out.push_back(first_moment[d]);
       }
@@ -97,7 +108,7 @@ namespace levelsinter
         area += in[2];
         volume_in_window += in[3];
         open   = open || in[4] > 0;
-        on_box = on_box || in[5] > 0;
+        box_faces |= static_cast<unsigned int>(in[5]);
         for (unsigned int d = 0; d < dim; ++d)
           first_moment[d] += in[6 + d];
       }
@@ -253,7 +264,7 @@ namespace levelsinter
                   if (value[k] > 0)
                     {
                       auto &s = sums[label[sets.find(k)]];
-                      s.on_box = true;
+                      s.box_faces |= 1u << cell->face(f)->boundary_id();
                       s.open   = s.open || !symmetry;
                     }
                 }
@@ -277,7 +288,7 @@ namespace levelsinter
           pore.volume_in_window = s.volume_in_window;
           pore.centroid         = Point<dim>(s.first_moment / s.volume);
           pore.open             = s.open;
-          pore.on_box           = s.on_box;
+          pore.box_faces        = s.box_faces;
           pores.push_back(pore);
         }
     // An order independent of the partition: centroids compared after

@@ -84,8 +84,9 @@ namespace levelsinter
            "Subsections are separated by '/'; a top-level entry has no '/'.\n"
            "Relative paths: files a scene reads (Geometry/Particle file) "
            "are found beside the\n"
-           "scene file; Output/Directory is relative to the working "
-           "directory.\n"
+           "scene file; Output/Directory, and any path given with --set, "
+           "are relative to the\n"
+           "working directory.\n"
            "Outputs (fields, metrics.csv, parameters.prm) go to "
            "Output/Directory. A directory\n"
            "that holds an earlier run is refused unless --overwrite (or "
@@ -184,7 +185,19 @@ namespace levelsinter
           }
       }
     for (const auto &[path, value] : overrides)
-      apply_override(prm, path, value);
+      {
+        // A file a --set names is the shell's: relative to the working
+        // directory, not to the scene file as the scene's own entries.
+        const bool input_file =
+          path == "Geometry/Particle file" || path == "Geometry/Pore file";
+        apply_override(prm,
+                       path,
+                       input_file && !value.empty() && value.front() != '/' ?
+                         std::filesystem::absolute(value)
+                           .lexically_normal()
+                           .string() :
+                         value);
+      }
   }
 
   std::string

@@ -17,6 +17,12 @@ namespace levelsinter
   void
   RemainingTime::add_step(const double t, const double dt, const double wall)
   {
+    if (!steps.empty())
+      {
+        costs.emplace_back(t - dt, wall - steps.back().wall);
+        if (costs.size() > cost_window)
+          costs.pop_front();
+      }
     steps.push_back({t, dt, wall});
     if (steps.size() > window + 1)
       steps.pop_front();
@@ -122,7 +128,8 @@ namespace levelsinter
               breaks.push_back(s);
           }
     std::sort(breaks.begin(), breaks.end());
-    double n_steps = 0;
+    double              n_steps = 0;
+    std::vector<double> pieces(breaks.size(), 0.); // steps per piece
     for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
       {
         const double s0 = breaks[k], s1 = breaks[k + 1];
@@ -136,13 +143,61 @@ namespace levelsinter
             return std::abs(x((s0 + s1) / 2) - dt) <
                    std::abs(y((s0 + s1) / 2) - dt);
           });
-        n_steps += steps_along(law, s0, s1);
+        pieces[k] = steps_along(law, s0, s1);
+        n_steps += pieces[k];
       }
     if (!std::isfinite(n_steps))
       return -1;
+
+    // The cost per step: the recent steps' mean C at their mean start time
+    // s_m, changed as (s / s_m)^p with p fitted to the longer history in
+    // log-log (a neck, and the refined cells it draws, grow as a power of
+    // time; a line in s extrapolated the early growth of the default
+    // scene 25 % too high, doc/user_guide.md "Progress"). |p| <= 2: a
+    // steeper fit is noise, not a trend.
     const double wall_per_step =
       (steps.back().wall - steps.front().wall) / (steps.size() - 1);
+    double mean_start = 0;
+    for (unsigned int k = 1; k < steps.size(); ++k)
+      mean_start += (steps[k].t - steps[k].dt) / (steps.size() - 1);
+    double power = 0;
+    if (mean_start > 0)
+      {
+        std::vector<std::pair<double, double>> logs;
+        for (const auto &[s, c] : costs)
+          if (s > 0 && c > 0)
+            logs.emplace_back(std::log(s), std::log(c));
+        if (logs.size() >= window)
+          power = std::clamp(fit(logs).b, -2., 2.);
+      }
+    const auto cost = [&](const double s) {
+      return power == 0 ? wall_per_step :
+                          wall_per_step * std::pow(s / mean_start, power);
+    };
     // A part of a step left is one more step.
-    return std::min(std::ceil(n_steps - 1e-9), steps_left) * wall_per_step;
+    const double all_steps = std::ceil(n_steps - 1e-9);
+    if (steps_left < all_steps || power == 0)
+      return std::min(all_steps, steps_left) * cost(t);
+    // Each piece's steps at the mean cost over its steps, sum cost(s)/dt(s)
+    // over sum 1/dt(s) (Simpson's rule); the part step at the end's cost.
+    double wall = (all_steps - n_steps) * cost(end_time);
+    for (unsigned int k = 0; k + 1 < breaks.size(); ++k)
+      {
+        const double s0 = breaks[k], s1 = breaks[k + 1];
+        if (!(s1 > s0))
+          continue;
+        double             weighted = 0, weights = 0;
+        const unsigned int n        = 16;
+        for (unsigned int i = 0; i <= n; ++i)
+          {
+            const double s = s0 + (s1 - s0) * i / n;
+            const double w =
+              (i == 0 || i == n ? 1 : (i % 2 ? 4 : 2)) / step_at(s);
+            weighted += w * cost(s);
+            weights += w;
+          }
+        wall += pieces[k] * weighted / weights;
+      }
+    return wall;
   }
 } // namespace levelsinter

@@ -23,15 +23,19 @@ namespace levelsinter
     Point<dim> centroid;
     // Touches a box face that is not a symmetry plane.
     bool open = false;
-    // Touches any box face, symmetry planes included: volume and area are
-    // those of the part in the box. Not serialised: the tracker does not
-    // use it.
-    bool on_box = false;
+    // The box faces it touches, symmetry planes included (bit b: the face
+    // of colorized boundary id b): volume and area are those of the part
+    // in the box. Not serialised: the tracker does not use it.
+    unsigned int box_faces = 0;
 
     /**
-     * 36 pi V^2 / S^3 in 3D, 4 pi A / P^2 in 2D: 1 for a ball. NaN for a
-     * pore on the box (open, or cut by a symmetry plane): the box faces
-     * are not part of its surface, so the ratio would describe no shape.
+     * 36 pi V^2 / S^3 in 3D, 4 pi A / P^2 in 2D: 1 for a ball. A closed
+     * pore cut by k symmetry planes is measured as the whole pore their
+     * mirrors make (2^k times its volume and area in the box, so the
+     * ratio divided by 2^k). NaN for an open pore, and for one that
+     * touches both planes of one axis (its mirrors never close): the box
+     * faces are not part of a surface, so the ratio would describe no
+     * shape.
      */
     double
     sphericity() const;

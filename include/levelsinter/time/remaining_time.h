@@ -16,8 +16,10 @@ namespace levelsinter
    * fitted as a line in the step's start time, dt = a + b s. On a piece
    * where one such law dt = a + b s decides, each step multiplies dt by
    * 1 + b, so the count from s0 to s1 is exact:
-   * ln(dt(s1)/dt(s0)) / ln(1 + b), or (s1 - s0)/a for b = 0. Each step
-   * left costs the mean wall time of the recent steps.
+   * ln(dt(s1)/dt(s0)) / ln(1 + b), or (s1 - s0)/a for b = 0. A step
+   * costs the mean wall time of the recent steps, changed as a power of
+   * the start time fitted to a longer history (a neck that grows draws
+   * more refined cells, and each step costs more).
    */
   class RemainingTime
   {
@@ -66,5 +68,10 @@ namespace levelsinter
     // cost more), short enough to follow a step that changes.
     static constexpr unsigned int window = 20;
     std::deque<Step>              steps;
+    // The cost trend is fitted over more steps: the slope of 20 noisy
+    // costs (adaptation every other step, a loaded machine) would wander.
+    static constexpr unsigned int cost_window = 100;
+    // (start time, wall time) of the last cost_window steps.
+    std::deque<std::pair<double, double>> costs;
   };
 } // namespace levelsinter
