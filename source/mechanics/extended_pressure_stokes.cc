@@ -79,32 +79,52 @@ namespace levelsinter
     make_constraints(nullptr);
     velocity_modes = rigid_body_modes(dofs, owned_partitioning[0]);
 
-    // Cells couple everything but the two pressures; faces couple each
-    // pressure with itself (the ghost penalty, on the faces of cut cells,
-    // which move with the interface between two mesh changes).
+    // Cells couple everything but the two pressures with each other; the
+    // faces of the ghost penalty couple each pressure with itself across
+    // them (for_each_penalty_face()).
     const unsigned int           n = dim + 2;
-    Table<2, DoFTools::Coupling> cells(n, n), faces(n, n), schur_cells(n, n);
+    Table<2, DoFTools::Coupling> cells(n, n), schur_cells(n, n);
     for (unsigned int c = 0; c < n; ++c)
       for (unsigned int d = 0; d < n; ++d)
         {
           const bool pressures = c >= dim && d >= dim;
           cells[c][d] =
             pressures && c != d ? DoFTools::none : DoFTools::always;
-          faces[c][d] = pressures && c == d ? DoFTools::always : DoFTools::none;
-          schur_cells[c][d] = faces[c][d];
+          schur_cells[c][d] =
+            pressures && c == d ? DoFTools::always : DoFTools::none;
         }
     const MPI_Comm comm = dofs.get_communicator();
-    const auto     make = [&](const Table<2, DoFTools::Coupling> &coupling,
+    std::vector<types::global_dof_index> cell_dofs(
+      finite_element.dofs_per_cell),
+      neighbor_dofs(finite_element.dofs_per_cell), pair;
+    const auto make = [&](const Table<2, DoFTools::Coupling> &coupling,
                           TrilinosWrappers::BlockSparseMatrix &matrix) {
       BlockDynamicSparsityPattern dsp(relevant_partitioning);
-      DoFTools::make_flux_sparsity_pattern(dofs,
-                                           dsp,
-                                           constraints,
-                                           false,
-                                           coupling,
-                                           faces,
-                                           Utilities::MPI::this_mpi_process(
-                                             comm));
+      DoFTools::make_sparsity_pattern(dofs,
+                                      coupling,
+                                      dsp,
+                                      constraints,
+                                      false,
+                                      Utilities::MPI::this_mpi_process(comm));
+      for_each_penalty_face([&](const auto &cell,
+                                const unsigned int,
+                                const auto &neighbor,
+                                const bool) {
+        cell->get_dof_indices(cell_dofs);
+        neighbor->get_dof_indices(neighbor_dofs);
+        for (const Phase phase : phases)
+          {
+            pair.clear();
+            for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+              if (finite_element.system_to_component_index(i).first ==
+                  pressure_component(phase))
+                {
+                  pair.push_back(cell_dofs[i]);
+                  pair.push_back(neighbor_dofs[i]);
+                }
+            constraints.add_entries_local_to_global(pair, dsp, false);
+          }
+      });
       SparsityTools::distribute_sparsity_pattern(dsp,
                                                  owned,
                                                  comm,
@@ -262,16 +282,72 @@ namespace levelsinter
     const std::array<PhaseCoefficients, 2> laws = {
       {phase_law.coefficients({1, 0}), phase_law.coefficients({0, 1})}};
     FullMatrix<double> matrix, schur;
+    for_each_penalty_face([&](const auto        &cell,
+                              const unsigned int f,
+                              const auto        &neighbor,
+                              const bool         coarser) {
+      const Location here  = classifier.location_to_level_set(cell);
+      const Location there = classifier.location_to_level_set(neighbor);
+      if (here != Location::intersected && there != Location::intersected)
+        return;
+      if (coarser)
+        {
+          const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
+          values.reinit(
+            cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
+        }
+      else
+        values.reinit(cell,
+                      f,
+                      numbers::invalid_unsigned_int,
+                      neighbor,
+                      cell->neighbor_of_neighbor(f),
+                      numbers::invalid_unsigned_int);
+      const unsigned int n = values.n_current_interface_dofs();
+      const double       h = cell_size(cell);
+      for (const Phase phase : phases)
+        if (holds(here, phase) && holds(there, phase))
+          {
+            const PhaseCoefficients &law = laws[phase == Phase::solid ? 0 : 1];
+            matrix.reinit(n, n);
+            schur.reinit(n, n);
+            penalty.assemble(values,
+                             alpha.measure(),
+                             pressure_component(phase),
+                             law.a2 * h * h * h / law.a1,
+                             matrix,
+                             schur);
+            const auto indices = values.get_interface_dof_indices();
+            constraints.distribute_local_to_global(matrix,
+                                                   indices,
+                                                   system_matrix);
+            constraints.distribute_local_to_global(schur,
+                                                   indices,
+                                                   schur_matrix);
+          }
+    });
+  }
+
+  template <int dim>
+  template <typename Callback>
+  void
+  ExtendedPressureStokes<dim>::for_each_penalty_face(
+    const Callback &callback) const
+  {
+    // Each face once: from the finer side, or at one level from the lower
+    // cell id (the lower rank across a partition boundary). Only in the
+    // interface band (its level or finer), which holds the interface
+    // between two mesh changes.
     for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
+      if (cell->is_locally_owned() &&
+          cell->level() >= int(settings.band_level))
         for (const unsigned int f : cell->face_indices())
           {
             if (cell->at_boundary(f))
               continue;
-            // Each face once: from the finer side, or at one level from the
-            // lower cell id (the lower rank across a partition boundary).
             const auto neighbor = cell->neighbor(f);
-            if (neighbor->has_children())
+            if (neighbor->has_children() ||
+                neighbor->level() < int(settings.band_level))
               continue;
             const bool coarser = cell->neighbor_is_coarser(f);
             if (!coarser &&
@@ -279,46 +355,7 @@ namespace levelsinter
                    neighbor->id() < cell->id() :
                    neighbor->subdomain_id() < cell->subdomain_id()))
               continue;
-            const Location here  = classifier.location_to_level_set(cell);
-            const Location there = classifier.location_to_level_set(neighbor);
-            if (here != Location::intersected && there != Location::intersected)
-              continue;
-            if (coarser)
-              {
-                const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
-                values.reinit(
-                  cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
-              }
-            else
-              values.reinit(cell,
-                            f,
-                            numbers::invalid_unsigned_int,
-                            neighbor,
-                            cell->neighbor_of_neighbor(f),
-                            numbers::invalid_unsigned_int);
-            const unsigned int n = values.n_current_interface_dofs();
-            const double       h = cell_size(cell);
-            for (const Phase phase : phases)
-              if (holds(here, phase) && holds(there, phase))
-                {
-                  const PhaseCoefficients &law =
-                    laws[phase == Phase::solid ? 0 : 1];
-                  matrix.reinit(n, n);
-                  schur.reinit(n, n);
-                  penalty.assemble(values,
-                                   alpha.measure(),
-                                   pressure_component(phase),
-                                   law.a2 * h * h * h / law.a1,
-                                   matrix,
-                                   schur);
-                  const auto indices = values.get_interface_dof_indices();
-                  constraints.distribute_local_to_global(matrix,
-                                                         indices,
-                                                         system_matrix);
-                  constraints.distribute_local_to_global(schur,
-                                                         indices,
-                                                         schur_matrix);
-                }
+            callback(cell, f, neighbor, coarser);
           }
   }
 
