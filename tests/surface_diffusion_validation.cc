@@ -190,7 +190,7 @@ namespace
                                                 std::vector<double>{1})
             {
               const std::string output =
-                "validation_output/" +
+                std::string("validation_output/") +
                 (viscous ? base.viscous_flow.pressure_space ==
                                ViscousFlowParameters::PressureSpace::extended ?
                              "vf_extended_" :
