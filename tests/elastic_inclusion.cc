@@ -33,7 +33,7 @@
 
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/mechanics/phase_law.h>
-#include <levelsinter/mechanics/two_phase_stokes.h>
+#include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
@@ -63,9 +63,9 @@ namespace
   // cut-cell quadrature (4 points per direction: p_h is Q1, its square Q2).
   template <int dim>
   PressureErrors
-  pressure_errors(const TwoPhaseStokes<dim> &stokes,
-                  const LevelSetField<dim>  &alpha,
-                  const double               p_in)
+  pressure_errors(const VelocityPressureOperator<dim> &stokes,
+                  const LevelSetField<dim>            &alpha,
+                  const double                         p_in)
   {
     NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
                                                 alpha.alpha());
@@ -80,7 +80,10 @@ namespace
                                       classifier,
                                       alpha.dof_handler(),
                                       alpha.alpha());
-    const FEValuesExtractors::Scalar pressure(dim);
+    // Each phase's own pressure (the same where there is one).
+    const std::array<FEValuesExtractors::Scalar, 2> pressure = {
+      {FEValuesExtractors::Scalar(stokes.pressure_component(Phase::solid)),
+       FEValuesExtractors::Scalar(stokes.pressure_component(Phase::fluid))}};
     // int (p - p_exact)^2, int p, volume; solid then fluid.
     std::array<double, 6> sums{{0, 0, 0, 0, 0, 0}};
     std::vector<double>   p;
@@ -94,7 +97,7 @@ namespace
             if (!region)
               return;
             p.resize(region->n_quadrature_points);
-            (*region)[pressure].get_function_values(stokes.solution(), p);
+            (*region)[pressure[k]].get_function_values(stokes.solution(), p);
             for (const unsigned int q : region->quadrature_point_indices())
               {
                 sums[3 * k] += std::pow(p[q] - exact, 2) * region->JxW(q);
@@ -104,12 +107,13 @@ namespace
           };
           add(values.get_inside_fe_values(), 0, p_in);
           add(values.get_outside_fe_values(), 1, 0.);
-          // Nodal fluid pressure: the pressure DoF is the last of a vertex.
+          // Nodal fluid pressure.
           const auto ls_cell = same_cell(cell, alpha.dof_handler());
           for (const unsigned int v : cell->vertex_indices())
             if (alpha.alpha()(ls_cell->vertex_dof_index(v, 0)) > 0)
-              lowest = std::min(
-                lowest, stokes.solution()(cell->vertex_dof_index(v, dim)));
+              lowest = std::min(lowest,
+                                stokes.solution()(cell->vertex_dof_index(
+                                  v, stokes.pressure_component(Phase::fluid))));
         }
     for (auto &s : sums)
       s = Utilities::MPI::sum(s, MPI_COMM_WORLD);
@@ -186,14 +190,16 @@ namespace
                                      atmosphere.fluid_compressibility);
           law.set_time_step(dt);
           // Sharp surface tension (Eq. 108 on {alpha_h = 0}) whatever the
-          // scene says.
+          // scene says, in the scene's pressure space.
           auto settings = TwoPhaseStokes<dim>::Settings::from(
             flow,
             atmosphere,
             scene.domain.symmetry_planes,
             scene.refinement.max_level);
           settings.form = TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
-          TwoPhaseStokes<dim> stokes(simulation.triangulation(), settings, law);
+          const auto operator_ = make_velocity_pressure_operator(
+            simulation.triangulation(), settings, law, flow);
+          auto &stokes = *operator_;
           stokes.setup_dofs();
 
           double first_mean = 0;

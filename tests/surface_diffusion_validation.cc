@@ -7,7 +7,10 @@
 // reduced, reference radius R = the particle's radius), in which mode n
 // decays as exp(-n^2 (n^2 - 1) t*) in 2D and as exp(-(n-1) n (n+1) (n+2) t*)
 // in 3D (Mullins 1957); with volume diffusion on (2D, elastic) as
-// exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3. Every
+// exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3; with viscous
+// flow on (2D, an atmosphere of negligible viscosity) as
+// exp(-n gamma t / (2 eta_s R)) in the scene's time (doc/numerics.md,
+// "Sharp interfaces"; iterations and solve CPU are then Stokes'). Every
 // combination of LEVELS (maximum refinement level) and STEPS (steps per
 // e-folding time) is run to one e-folding time; the amplitude is measured
 // after every step from the discrete interface and the rate fitted by
@@ -153,7 +156,14 @@ namespace
     const double G = base.phase_law.shear_modulus,
                  K = base.phase_law.bulk_modulus;
     const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
+    const bool viscous = base.viscous_flow.enabled;
+    const double radius = base.geometry.particles[0][dim];
+    if (viscous && (dim != 2 || base.geometry.axisymmetric))
+      throw std::runtime_error(
+        "mullins: the viscous rate is known here for a 2D cylinder only");
     const double exact_rate =
+      viscous ? mode * base.materials.surface_tension /
+                  (2 * base.viscous_flow.solid_viscosity * radius) :
       base.volume_diffusion.enabled ?
         2. / 3 * (1 + nu) * mode * (mode * mode - 1.) :
       dim == 2 && !base.geometry.axisymmetric ?
@@ -163,7 +173,6 @@ namespace
     Point<dim>   centre;
     for (unsigned int d = 0; d < dim; ++d)
       centre[d] = base.geometry.particles[0][d];
-    const double radius = base.geometry.particles[0][dim];
 
     study::Table table({"mode", "level", "h", "steps", "dt", "max_dofs",
                         "rate", "exact_rate", "rate_error", "volume_change",
@@ -181,7 +190,13 @@ namespace
                                                 std::vector<double>{1})
             {
               const std::string output =
-                "validation_output/sd_" + std::to_string(dim) + "d_n" +
+                std::string("validation_output/") +
+                (viscous ? base.viscous_flow.pressure_space ==
+                               ViscousFlowParameters::PressureSpace::extended ?
+                             "vf_extended_" :
+                             "vf_" :
+                           "sd_") +
+                std::to_string(dim) + "d_n" +
                 std::to_string(mode) + "_l" + std::to_string(level) + "_s" +
                 std::to_string(steps) +
                 (base.volume_correction.enabled ? "_vc" : "") +
@@ -255,10 +270,14 @@ namespace
               if (std::abs(change) > std::abs(volume_change))
                 volume_change = change;
               iterations += column_mean(output + "/metrics.csv",
-                                        "surface_diffusion_iterations") /
+                                        viscous ?
+                                          "stokes_iterations" :
+                                          "surface_diffusion_iterations") /
                             n_signs;
               solve_cpu += column_mean(output + "/metrics.csv",
-                                       "surface_diffusion_solve_cpu_time") /
+                                       viscous ?
+                                         "stokes_solve_cpu" :
+                                         "surface_diffusion_solve_cpu_time") /
                            n_signs;
               wall_time += summary.wall_time;
               cpu_time += summary.cpu_time;

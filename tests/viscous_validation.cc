@@ -124,8 +124,8 @@ namespace
   // quadrature) and over the pore, and their areas.
   template <int dim>
   std::array<double, 2>
-  mean_pressures(const TwoPhaseStokes<dim> &stokes,
-                 const LevelSetField<dim>  &alpha)
+  mean_pressures(const VelocityPressureOperator<dim> &stokes,
+                 const LevelSetField<dim>            &alpha)
   {
     NonMatching::RegionUpdateFlags flags;
     const UpdateFlags region =
@@ -134,16 +134,18 @@ namespace
     flags.outside = region;
     CutCellValues<dim> cut(stokes.fe(), alpha, flags);
     auto              &values = cut.values;
-    const FEValuesExtractors::Scalar pressure(dim);
-    std::array<double, 4>            sums{{0, 0, 0, 0}};
-    std::vector<double>              p;
+    std::array<double, 4> sums{{0, 0, 0, 0}};
+    std::vector<double>   p;
     for (const auto &cell : stokes.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           values.reinit(cell);
+          // Each phase's own pressure (the same where there is one).
           const auto add = [&](const auto &region, const unsigned int k) {
             if (!region)
               return;
+            const FEValuesExtractors::Scalar pressure(
+              stokes.pressure_component(k == 0 ? Phase::solid : Phase::fluid));
             p.resize(region->n_quadrature_points);
             (*region)[pressure].get_function_values(stokes.solution(), p);
             for (const unsigned int q : region->quadrature_point_indices())
@@ -166,24 +168,29 @@ namespace
   // accuracy of the surface-tension load.
   template <int dim>
   std::array<double, 2>
-  core_pressures(const TwoPhaseStokes<dim> &stokes,
-                 const SceneMeasure        &measure,
-                 const Point<dim>          &centre,
-                 const double               R)
+  core_pressures(const VelocityPressureOperator<dim> &stokes,
+                 const SceneMeasure                  &measure,
+                 const Point<dim>                    &centre,
+                 const double                         R)
   {
     const QGauss<dim>                quadrature(3);
     FEValues<dim>                    values(stokes.fe(),
                          quadrature,
                          update_values | update_quadrature_points |
                            update_JxW_values);
-    const FEValuesExtractors::Scalar pressure(dim);
-    std::array<double, 4>            sums{{0, 0, 0, 0}};
-    std::vector<double>              p(quadrature.size());
+    const std::array<FEValuesExtractors::Scalar, 2> pressure = {
+      {FEValuesExtractors::Scalar(stokes.pressure_component(Phase::solid)),
+       FEValuesExtractors::Scalar(stokes.pressure_component(Phase::fluid))}};
+    std::array<double, 4> sums{{0, 0, 0, 0}};
+    std::array<std::vector<double>, 2> p{
+      {std::vector<double>(quadrature.size()),
+       std::vector<double>(quadrature.size())}};
     for (const auto &cell : stokes.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
           values.reinit(cell);
-          values[pressure].get_function_values(stokes.solution(), p);
+          for (unsigned int k = 0; k < 2; ++k)
+            values[pressure[k]].get_function_values(stokes.solution(), p[k]);
           for (const unsigned int q : values.quadrature_point_indices())
             {
               const double r = values.quadrature_point(q).distance(centre);
@@ -191,7 +198,7 @@ namespace
               if (k >= 0)
                 {
                   const double JxW = measure.JxW(values, q);
-                  sums[2 * k] += p[q] * JxW;
+                  sums[2 * k] += p[k][q] * JxW;
                   sums[2 * k + 1] += JxW;
                 }
             }

@@ -1,6 +1,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/dofs/dof_tools.h>
+
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/grid/grid_tools.h>
@@ -8,8 +10,13 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <deal.II/numerics/vector_tools.h>
+
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
+
+#include <algorithm>
+#include <limits>
 
 namespace levelsinter
 {
@@ -89,7 +96,7 @@ namespace levelsinter
     FEValues<dim> alpha_values(level_set.fe(), quadrature, update_values);
     std::vector<double>         alpha_q(quadrature.size());
     std::vector<Vector<double>> v_q(quadrature.size(),
-                                    Vector<double>(dim + 1));
+                                    Vector<double>(dofs.get_fe().n_components()));
 
     // Rotations about the centre of the box. A rotation about e_k is free
     // only with the translations normal to e_k, so the span of the free
@@ -168,6 +175,69 @@ namespace levelsinter
     solution = owned;
   }
 
+  template <int dim>
+  void
+  make_velocity_constraints(const DoFHandler<dim>                 &dofs,
+                            const IndexSet                        &relevant_dofs,
+                            const std::vector<types::boundary_id> &symmetry,
+                            const FreeRigidMotions                &motions,
+                            AffineConstraints<double>             &constraints)
+  {
+    constraints.clear();
+    constraints.reinit(relevant_dofs);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    const unsigned int n_components = dofs.get_fe().n_components();
+    for (const types::boundary_id id : symmetry)
+      {
+        ComponentMask normal(n_components, false);
+        normal.set(id / 2, true);
+        VectorTools::interpolate_boundary_values(
+          dofs,
+          id,
+          Functions::ZeroFunction<dim>(n_components),
+          constraints,
+          normal);
+      }
+
+    Point<dim> lower, upper;
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        lower[d] = std::numeric_limits<double>::max();
+        upper[d] = -std::numeric_limits<double>::max();
+      }
+    for (const auto &vertex : dofs.get_triangulation().get_vertices())
+      for (unsigned int d = 0; d < dim; ++d)
+        {
+          lower[d] = std::min(lower[d], vertex[d]);
+          upper[d] = std::max(upper[d], vertex[d]);
+        }
+    Point<dim> b = lower, c = lower;
+    b[0]         = upper[0];
+    c[1]         = upper[1];
+    std::vector<std::pair<Point<dim>, unsigned int>> pins;
+    for (const unsigned int k : motions.translations)
+      pins.emplace_back(lower, k);
+    for (const unsigned int k : motions.rotations)
+      if (k == 2)
+        pins.emplace_back(b, 1);
+      else if (k == 1)
+        pins.emplace_back(b, 2);
+      else
+        pins.emplace_back(c, 2);
+    const double tolerance = 1e-10 * lower.distance(upper);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int v : cell->vertex_indices())
+          for (const auto &[point, component] : pins)
+            if (cell->vertex(v).distance(point) < tolerance)
+              {
+                const auto index = cell->vertex_dof_index(v, component);
+                if (constraints.can_store_line(index) &&
+                    !constraints.is_constrained(index))
+                  constraints.add_line(index);
+              }
+  }
+
   template Tensor<1, 2>
   FreeRigidMotions::mode<2>(const unsigned int,
                             const Point<2> &,
@@ -186,4 +256,16 @@ namespace levelsinter
                            const LevelSetField<3> &,
                            const FreeRigidMotions &,
                            TrilinosWrappers::MPI::BlockVector &);
+  template void
+  make_velocity_constraints(const DoFHandler<2> &,
+                            const IndexSet &,
+                            const std::vector<types::boundary_id> &,
+                            const FreeRigidMotions &,
+                            AffineConstraints<double> &);
+  template void
+  make_velocity_constraints(const DoFHandler<3> &,
+                            const IndexSet &,
+                            const std::vector<types::boundary_id> &,
+                            const FreeRigidMotions &,
+                            AffineConstraints<double> &);
 } // namespace levelsinter

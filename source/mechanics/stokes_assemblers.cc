@@ -190,6 +190,36 @@ namespace levelsinter
           }
   }
 
+  template <int dim>
+  void
+  GhostPenaltyAssembler<dim>::assemble(const FEInterfaceValues<dim> &values,
+                                       const SceneMeasure           &measure,
+                                       const unsigned int            component,
+                                       const double                  weight,
+                                       FullMatrix<double>           &matrix,
+                                       FullMatrix<double>           &schur) const
+  {
+    const FEValuesExtractors::Scalar pressure(component);
+    const unsigned int               n = values.n_current_interface_dofs();
+    std::vector<double>              jump(n);
+    for (const unsigned int q : values.quadrature_point_indices())
+      {
+        const Tensor<1, dim> normal = values.normal(q);
+        const double factor =
+          constant * weight * measure.JxW(values.get_fe_face_values(0), q);
+        for (unsigned int i = 0; i < n; ++i)
+          jump[i] = values[pressure].jump_in_gradients(i, q) * normal;
+        for (unsigned int i = 0; i < n; ++i)
+          if (jump[i] != 0)
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const double entry = factor * jump[i] * jump[j];
+                matrix(i, j) -= entry;
+                schur(i, j) += entry;
+              }
+      }
+  }
+
 #define INSTANTIATE(dim)                                            \
   template class BulkAssembler<dim>;                                \
   template class StabilisationAssembler<dim>;                       \
@@ -197,6 +227,7 @@ namespace levelsinter
   template class BalancedForceAssembler<dim>;                       \
   template class LaplaceBeltramiAssembler<dim>;                     \
   template class TractionAssembler<dim>;                            \
+  template class GhostPenaltyAssembler<dim>;                        \
   template void symmetrise(const StokesCellData<dim> &, CellContribution &);
   INSTANTIATE(2)
   INSTANTIATE(3)

@@ -1,5 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 
+#include <deal.II/fe/mapping_q1.h>
+
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
@@ -54,11 +56,42 @@ namespace levelsinter
                   update_values | update_normal_vectors | update_JxW_values |
                     update_quadrature_points)
     , fe_collection(fe)
+    , mapping_collection(StaticMappingQ1<dim>::mapping)
+    , uncut_quadrature(QGauss<dim>(2))
+    , cut_quadrature(QGauss<1>(3))
     , vertex_alpha(inputs.alpha.fe().dofs_per_cell)
   {
     for (unsigned int i = 0; i < n_dofs; ++i)
       (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
-    if (inputs.surface == SurfaceMeasure::sharp)
+    if (inputs.extended_pressure)
+      {
+        for (const unsigned int i : pressure_dofs)
+          phase_pressure_dofs[component[i] - dim].push_back(i);
+        classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
+          inputs.alpha.dof_handler(), inputs.alpha.alpha());
+        classifier->reclassify();
+        NonMatching::RegionUpdateFlags flags;
+        flags.inside  = cell_flags;
+        flags.outside = cell_flags;
+        flags.surface = update_values | update_gradients | update_JxW_values |
+                        update_normal_vectors | update_quadrature_points;
+        // Uncut cells: 2 Gauss points per direction, exact for the Q1
+        // products as in reinit(). Cut cells: the generated rules on
+        // {alpha_h < 0} and {alpha_h > 0} from 3 points per direction, so
+        // that the two parts add up to the cell's integral of the
+        // velocity terms to round-off and the pressure terms see a
+        // well-resolved part.
+        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
+          mapping_collection,
+          fe_collection,
+          uncut_quadrature,
+          cut_quadrature,
+          flags,
+          *classifier,
+          inputs.alpha.dof_handler(),
+          inputs.alpha.alpha());
+      }
+    else if (inputs.surface == SurfaceMeasure::sharp)
       {
         classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
           inputs.alpha.dof_handler(), inputs.alpha.alpha());
@@ -236,26 +269,82 @@ namespace levelsinter
   StokesCellData<dim>::gather_sharp_surface(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
-    const FEValuesExtractors::Vector velocity(0);
     cut_values->reinit(cell);
     if (const auto &cut = cut_values->get_surface_fe_values())
-      for (const unsigned int k : cut->quadrature_point_indices())
-        {
-          SurfacePoint point{cut->normal_vector(k),
-                             measure.JxW(*cut, k),
-                             {},
-                             {}};
-          const double inverse_radius =
-            measure.inverse_radius(cut->quadrature_point(k));
-          point.grad_w.resize(n_dofs);
-          point.hoop.resize(n_dofs);
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              point.grad_w[i] = (*cut)[velocity].gradient(i, k);
-              point.hoop[i] = (*cut)[velocity].value(i, k)[0] * inverse_radius;
-            }
-          surface.push_back(std::move(point));
-        }
+      add_surface_points(*cut);
+  }
+
+  template <int dim>
+  void
+  StokesCellData<dim>::add_surface_points(
+    const NonMatching::FEImmersedSurfaceValues<dim> &cut)
+  {
+    const FEValuesExtractors::Vector velocity(0);
+    for (const unsigned int k : cut.quadrature_point_indices())
+      {
+        SurfacePoint point{cut.normal_vector(k), measure.JxW(cut, k), {}, {}};
+        const double inverse_radius =
+          measure.inverse_radius(cut.quadrature_point(k));
+        point.grad_w.resize(n_dofs);
+        point.hoop.resize(n_dofs);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            point.grad_w[i] = cut[velocity].gradient(i, k);
+            point.hoop[i]   = cut[velocity].value(i, k)[0] * inverse_radius;
+          }
+        surface.push_back(std::move(point));
+      }
+  }
+
+  template <int dim>
+  void
+  StokesCellData<dim>::reinit_cut(
+    const typename DoFHandler<dim>::active_cell_iterator &cell)
+  {
+    h = cell_size(cell);
+    surface.clear();
+    gather_sharp_surface(cell);
+    free_faces.clear();
+    if (inputs.free_faces)
+      gather_free_faces(cell);
+  }
+
+  template <int dim>
+  bool
+  StokesCellData<dim>::select_phase(const Phase phase)
+  {
+    const auto &region = phase == Phase::solid ?
+                           cut_values->get_inside_fe_values() :
+                           cut_values->get_outside_fe_values();
+    if (!region)
+      return false;
+    reinit_shapes(*region);
+    pressure_dofs = phase_pressure_dofs[phase == Phase::solid ? 0 : 1];
+
+    // Each phase is pure on its side of the sharp interface: no smoothing
+    // width, and the atmosphere is compressible up to the interface, since
+    // the solid's own pressure keeps the solid incompressible (the
+    // transition zone of NewtonianPhases is not needed).
+    const PhaseFractions fractions =
+      phase == Phase::solid ? PhaseFractions{1, 0} : PhaseFractions{0, 1};
+    const PhaseCoefficients coefficients = inputs.law.coefficients(fractions);
+    // Laws that read their state from the level set's element
+    // (viscoelastic melts) are refused with the extended pressure
+    // (SceneParameters), so the level-set values are not read.
+    const bool memory = inputs.law.has_history();
+    if (memory)
+      inputs.law.material_states(
+        {*region, uniform_level_set_values, inputs.displacement}, states);
+    a1_cell = coefficients.a1;
+    for (unsigned int k = 0; k < n_q; ++k)
+      {
+        law[k] = coefficients;
+        if (memory)
+          history[k] = inputs.law.history(fractions, states[k]);
+        tau[k] = inputs.stabilisation_constant * coefficients.a2 * h * h /
+                 coefficients.a1;
+      }
+    return true;
   }
 
   template <int dim>

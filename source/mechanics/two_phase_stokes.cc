@@ -136,72 +136,12 @@ namespace levelsinter
   void
   TwoPhaseStokes<dim>::make_constraints()
   {
-    constraints.clear();
-    constraints.reinit(relevant_dofs);
-    DoFTools::make_hanging_node_constraints(dofs, constraints);
-    // Symmetry plane = box face with zero normal velocity; the faces are
-    // axis-aligned (colorized ids 2k, 2k+1 have normal e_k), so this is a
-    // homogeneous Dirichlet condition on one component.
-    for (const types::boundary_id id : settings.symmetry_boundaries)
-      {
-        ComponentMask normal(dim + 1, false);
-        normal.set(id / 2, true);
-        VectorTools::interpolate_boundary_values(
-          dofs, id, Functions::ZeroFunction<dim>(dim + 1), constraints, normal);
-      }
-    pin_rigid_body_modes();
+    make_velocity_constraints(dofs,
+                              relevant_dofs,
+                              settings.symmetry_boundaries,
+                              free_motions,
+                              constraints);
     constraints.close();
-  }
-
-  template <int dim>
-  void
-  TwoPhaseStokes<dim>::pin_rigid_body_modes()
-  {
-    // Pin what survives the symmetry planes at box corners: with the lower
-    // corner a, b = a + L_x e_x and c = a + L_y e_y, v_k(a) = 0 removes the
-    // translation along e_k, v_y(b) = 0 the rotation about z, v_z(b) = 0
-    // the one about y and v_z(c) = 0 the one about x. The capillary load is
-    // self-equilibrated (see the class documentation), so the pins carry no
-    // reaction: they only select one member of the family of solutions
-    // (remove_rigid_motion() then selects the physical one).
-    Point<dim> lower, upper;
-    for (unsigned int d = 0; d < dim; ++d)
-      {
-        lower[d] = std::numeric_limits<double>::max();
-        upper[d] = -std::numeric_limits<double>::max();
-      }
-    const auto &tria = dofs.get_triangulation();
-    for (const auto &vertex : tria.get_vertices())
-      for (unsigned int d = 0; d < dim; ++d)
-        {
-          lower[d] = std::min(lower[d], vertex[d]);
-          upper[d] = std::max(upper[d], vertex[d]);
-        }
-    Point<dim> b = lower, c = lower;
-    b[0]         = upper[0];
-    c[1]         = upper[1];
-    std::vector<std::pair<Point<dim>, unsigned int>> pins;
-    for (const unsigned int k : free_motions.translations)
-      pins.emplace_back(lower, k);
-    for (const unsigned int k : free_motions.rotations)
-      if (k == 2)
-        pins.emplace_back(b, 1);
-      else if (k == 1)
-        pins.emplace_back(b, 2);
-      else
-        pins.emplace_back(c, 2);
-    const double tolerance = 1e-10 * lower.distance(upper);
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (!cell->is_artificial())
-        for (const unsigned int v : cell->vertex_indices())
-          for (const auto &[point, component] : pins)
-            if (cell->vertex(v).distance(point) < tolerance)
-              {
-                const auto index = cell->vertex_dof_index(v, component);
-                if (constraints.can_store_line(index) &&
-                    !constraints.is_constrained(index))
-                  constraints.add_line(index);
-              }
   }
 
   namespace

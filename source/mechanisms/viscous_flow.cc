@@ -60,7 +60,8 @@ namespace levelsinter
     using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
     // The DoFHandler is tied to the triangulation, which the time loop
     // builds after the mechanisms: create the operator on first use.
-    operator_ = std::make_unique<TwoPhaseStokes<dim>>(tria, settings, *phases);
+    operator_ =
+      make_velocity_pressure_operator(tria, settings, *phases, parameters);
     operator_->setup_dofs();
     if (viscoelastic)
       viscoelastic->setup(alpha);
@@ -184,17 +185,7 @@ namespace levelsinter
     }
     operator_->remove_rigid_motion(alpha);
 
-    // Same mesh, Q1 in both spaces: hand the nodal velocity over vertex by
-    // vertex (the first dim vertex DoFs of the Stokes element are the
-    // velocity components).
-    const auto &solution = operator_->solution();
-    velocity.add_vertex_values(operator_->dof_handler(),
-                               [&](const auto &cell, const unsigned int v) {
-      Tensor<1, dim> value;
-      for (unsigned int c = 0; c < dim; ++c)
-        value[c] = solution(cell->vertex_dof_index(v, c));
-      return value;
-    });
+    operator_->add_vertex_velocities(velocity);
 
     // The melt's conformation follows the velocity just solved for (the
     // scene's velocity so far: this and any prescribed one).
@@ -280,11 +271,15 @@ namespace levelsinter
                                       DataOut<dim>             &data_out) const
   {
     std::vector<std::string> names(dim, "viscous_flow_velocity");
-    names.emplace_back("viscous_flow_pressure");
     std::vector<DataComponentInterpretation::DataComponentInterpretation>
       interpretation(dim,
                      DataComponentInterpretation::component_is_part_of_vector);
-    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
+    for (const auto &name : operator_->pressure_names("viscous_flow"))
+      {
+        names.push_back(name);
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
     data_out.add_data_vector(operator_->dof_handler(),
                              operator_->solution(),
                              names,

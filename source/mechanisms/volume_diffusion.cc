@@ -52,27 +52,6 @@ namespace levelsinter
       s.symmetry_boundaries  = symmetry_planes;
       return s;
     }
-
-    // @p block (ghosted, numbered as @p dofs: TwoPhaseStokes::setup_dofs()
-    // numbers the velocity block first) as one ghosted plain vector on
-    // @p dofs, the form NormalGradientExtension reads.
-    template <int dim>
-    TrilinosWrappers::MPI::Vector
-    as_plain_vector(const TrilinosWrappers::MPI::BlockVector &block,
-                    const DoFHandler<dim>                    &dofs)
-    {
-      const IndexSet owned = dofs.locally_owned_dofs();
-      TrilinosWrappers::MPI::Vector plain(owned, dofs.get_communicator());
-      for (const auto i : owned)
-        plain(i) = block(i);
-      plain.compress(VectorOperation::insert);
-      TrilinosWrappers::MPI::Vector ghosted(
-        owned,
-        DoFTools::extract_locally_relevant_dofs(dofs),
-        dofs.get_communicator());
-      ghosted = plain;
-      return ghosted;
-    }
   } // namespace
 
   template <int dim>
@@ -92,6 +71,7 @@ namespace levelsinter
                                                    materials,
                                                    symmetry_planes,
                                                    band_level))
+    , mechanics_parameters(mechanics)
     , phases(make_phase_law<dim>(law, mechanics, materials))
     , probe_step(materials.fluid_viscosity / (1e-5 * law.shear_modulus))
     , limit_per_h3([&]() {
@@ -121,8 +101,11 @@ namespace levelsinter
     // builds after the mechanisms: create the problem on first use and
     // keep it (and its DoFHandler, which the state transfer refers to).
     if (!operator_)
-      operator_ = std::make_unique<TwoPhaseStokes<dim>>(
-        alpha.dof_handler().get_triangulation(), settings, *phases);
+      operator_ = make_velocity_pressure_operator(
+        alpha.dof_handler().get_triangulation(),
+        settings,
+        *phases,
+        mechanics_parameters);
     operator_->setup_dofs();
     extension.setup(alpha);
     h_min = finest_cell_size(alpha.dof_handler().get_triangulation());
@@ -184,11 +167,12 @@ namespace levelsinter
     }
 
     const unsigned int unsourced_before = extension.unsourced_interface_cells();
-    xi_iterations = extension.solve(alpha,
-                                    operator_->dof_handler(),
-                                    dim,
-                                    as_plain_vector(operator_->solution(),
-                                                    operator_->dof_handler()));
+    // The solid's pressure (its own where each phase has one).
+    xi_iterations =
+      extension.solve(alpha,
+                      operator_->dof_handler(),
+                      operator_->pressure_component(Phase::solid),
+                      operator_->plain_solution());
     const unsigned int unsourced = extension.unsourced_interface_cells();
     if (unsourced > 0 && unsourced_before == 0 && !warned_unsourced)
       {
@@ -228,11 +212,15 @@ namespace levelsinter
       DataComponentInterpretation::DataComponentInterpretation;
     std::vector<Interpretation> interpretation(
       dim, DataComponentInterpretation::component_is_part_of_vector);
-    interpretation.push_back(DataComponentInterpretation::component_is_scalar);
 
     // The elastic velocity rate and the pressure of the last solve.
     std::vector<std::string> names(dim, "volume_diffusion_elastic_velocity");
-    names.emplace_back("volume_diffusion_pressure");
+    for (const auto &name : operator_->pressure_names("volume_diffusion"))
+      {
+        names.push_back(name);
+        interpretation.push_back(
+          DataComponentInterpretation::component_is_scalar);
+      }
     data_out.add_data_vector(operator_->dof_handler(),
                              operator_->solution(),
                              names,

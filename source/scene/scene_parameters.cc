@@ -347,6 +347,16 @@ namespace levelsinter
                  "flow/Enabled = true': the melt's polymer stress enters "
                  "the viscous flow problem");
 
+    // The extended pressure integrates each phase on its side of the
+    // interface; a melt's polymer stress lives on the level set's element,
+    // which its cut-cell quadrature does not evaluate yet.
+    if (phase_law.is_viscoelastic() &&
+        viscous_flow.pressure_space ==
+          ViscousFlowParameters::PressureSpace::extended)
+      fail_entry("Viscous flow/Pressure space",
+                 "'extended' is not available with a viscoelastic law "
+                 "(giesekus, xpp) yet; use 'continuous'");
+
     // The band is located by reading distances back through the filter,
     // which saturates at E; at E itself every saturated node reads as "in
     // the band", which refines the whole box, so on an adaptive mesh the

@@ -84,6 +84,25 @@ namespace levelsinter
                         "c in the explicit capillary limit dt <= c eta_s "
                         "h_min / gamma (no unit); 0 disables it. Not applied with "
                         "semi-implicit surface tension.");
+      prm.declare_entry("Pressure space",
+                        "continuous",
+                        Patterns::Selection("continuous|extended"),
+                        "continuous: one Q1 pressure over the box, the phases "
+                        "smeared over the interface half width; extended: one "
+                        "Q1 pressure per phase, both present on the cells the "
+                        "interface cuts and each integrated over its own "
+                        "side of alpha_h = 0 with cut-cell quadrature, the "
+                        "viscosities sharp, so the pressure jumps at the "
+                        "interface (doc/numerics.md, 'Sharp interfaces'). "
+                        "extended needs 'Surface tension form = sharp' and "
+                        "the iterative linear solver, and refuses "
+                        "viscoelastic melts.");
+      prm.declare_entry("Ghost penalty",
+                        "0.1",
+                        Patterns::Double(0),
+                        "g of the pressure ghost penalty of the extended "
+                        "pressure space, g (a2/a1) h^3 [d_n p][d_n q] on the "
+                        "faces of cut cells (no unit; doc/numerics.md).");
     }
     prm.leave_subsection();
   }
@@ -118,7 +137,26 @@ namespace levelsinter
     solver_tolerance           = prm.get_double("Solver tolerance");
     max_iterations             = prm.get_integer("Maximum solver iterations");
     capillary_time_step_factor = prm.get_double("Capillary time step factor");
+    pressure_space             = read_selection<PressureSpace>(
+      prm,
+      "Viscous flow",
+      "Pressure space",
+      {{"continuous", PressureSpace::continuous},
+       {"extended", PressureSpace::extended}});
+    ghost_penalty = prm.get_double("Ghost penalty");
     prm.leave_subsection();
+
+    // The volume-diffusion mechanics reads this section too, enabled or
+    // not: its checks come first.
+    if (pressure_space == PressureSpace::extended &&
+        linear_solver == LinearSolver::direct)
+      fail_entry("Viscous flow/Linear solver",
+                 "must be 'iterative' with 'Pressure space = extended'");
+    if (enabled && pressure_space == PressureSpace::extended &&
+        surface_tension_form != SurfaceTensionForm::sharp)
+      fail_entry("Viscous flow/Surface tension form",
+                 "must be 'sharp' with 'Pressure space = extended' (the "
+                 "pressure jumps at alpha_h = 0, where the load acts)");
 
     if (!enabled)
       return;

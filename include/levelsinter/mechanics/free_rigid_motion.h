@@ -6,6 +6,7 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
 #include <levelsinter/level_set/level_set_field.h>
@@ -65,4 +66,26 @@ namespace levelsinter
                            const LevelSetField<dim>           &level_set,
                            const FreeRigidMotions             &motions,
                            TrilinosWrappers::MPI::BlockVector &solution);
+
+  /**
+   * The velocity constraints every velocity-pressure discretisation shares,
+   * into @p constraints (cleared and reinitialised on @p relevant_dofs, not
+   * closed): hanging nodes (all components), zero normal velocity on the
+   * symmetry planes (box faces with colorized ids 2k, 2k+1 have normal
+   * e_k) and the pins of the free rigid motions at box corners: with the
+   * lower corner a, b = a + L_x e_x and c = a + L_y e_y, v_k(a) = 0
+   * removes the translation along e_k, v_y(b) = 0 the rotation about z,
+   * v_z(b) = 0 the one about y and v_z(c) = 0 the one about x. The
+   * capillary load is self-equilibrated, so the pins carry no reaction:
+   * they only select one member of the family of solutions
+   * (remove_free_rigid_motion() then selects the physical one). The
+   * velocity is components 0..dim-1 of @p dofs' element.
+   */
+  template <int dim>
+  void
+  make_velocity_constraints(const DoFHandler<dim>                 &dofs,
+                            const IndexSet                        &relevant_dofs,
+                            const std::vector<types::boundary_id> &symmetry,
+                            const FreeRigidMotions                &motions,
+                            AffineConstraints<double>             &constraints);
 } // namespace levelsinter

@@ -1,5 +1,7 @@
 #pragma once
 
+#include <deal.II/fe/fe_interface_values.h>
+
 #include <levelsinter/mechanics/stokes_cell_data.h>
 
 namespace levelsinter
@@ -137,6 +139,45 @@ namespace levelsinter
 
   private:
     const double p_ext;
+  };
+
+  /**
+   * Pressure ghost penalty of the extended pressure (ExtendedPressureStokes;
+   * Burman & Hansbo 2014, Massing et al. 2014): on an interior face of a
+   * cut cell whose two cells both hold phase P,
+   *   g (a2 / a1)_P h^3 int_F [grad p_P . n][grad q_P . n],
+   * with the phase's coefficients (the scaling of the ASGS tau of Eq. 99,
+   * without its constant) and h the cell size. A phase's part
+   * of a cut cell can be arbitrarily small, and the ASGS term alone then
+   * controls the pressure there only as much as the part is large; the
+   * face term extends the control of the neighbours into it, so the
+   * pressure (and the system's conditioning) stays bounded however the
+   * interface cuts the cell. Q1 has no higher normal derivatives to jump,
+   * and the exact pressure is smooth within a phase, so the term is
+   * consistent to O(h^2). It belongs to -C (the sign of the ASGS term in
+   * the system, the opposite in the Schur approximation).
+   */
+  template <int dim>
+  class GhostPenaltyAssembler
+  {
+  public:
+    explicit GhostPenaltyAssembler(const double constant)
+      : constant(constant)
+    {}
+
+    /** The penalty of the pressure in component @p component of the
+     * element, with @p weight = (a2 / a1)_P h^3, on the face @p values was reinit
+     * on; @p matrix and @p schur are sized to its interface DoFs. */
+    void
+    assemble(const FEInterfaceValues<dim> &values,
+             const SceneMeasure           &measure,
+             const unsigned int            component,
+             const double                  weight,
+             FullMatrix<double>           &matrix,
+             FullMatrix<double>           &schur) const;
+
+  private:
+    const double constant;
   };
 
   /** Copy the upper triangle of the same-type pairs (velocity-velocity,

@@ -10,6 +10,7 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
 
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
@@ -22,6 +23,7 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/scene_measure.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/mechanics/velocity_pressure_operator.h>
 
 #include <memory>
 #include <vector>
@@ -78,6 +80,11 @@ namespace levelsinter
       // Gather the free box faces (those off the symmetry planes).
       bool                            free_faces = false;
       std::vector<types::boundary_id> symmetry_boundaries;
+      // The extended pressure (ExtendedPressureStokes): the element has
+      // one pressure per phase (components dim: solid, dim + 1: fluid),
+      // gathered with reinit_cut() and select_phase() instead of
+      // reinit(); the surface is then the sharp one.
+      bool extended_pressure = false;
     };
 
     /** One point of the surface measure of Gamma: unit normal, weight dS
@@ -123,10 +130,29 @@ namespace levelsinter
     void
     reinit(const typename DoFHandler<dim>::active_cell_iterator &cell);
 
+    /**
+     * The extended pressure: gather on @p cell what does not depend on the
+     * phase (cell size, the sharp surface points of the cut cells, the
+     * free box faces); then select_phase() for each phase.
+     */
+    void
+    reinit_cut(const typename DoFHandler<dim>::active_cell_iterator &cell);
+
+    /**
+     * The extended pressure: the volume data of the part of the cell
+     * reinit_cut() was called on that lies in @p phase (the whole cell if
+     * it is uncut; cut-cell quadrature on {alpha_h < 0} or {alpha_h > 0}
+     * otherwise), with the law's coefficients of the pure phase and
+     * pressure_dofs that phase's pressure. Returns false (and gathers
+     * nothing) if the cell has no part in @p phase.
+     */
+    bool
+    select_phase(const Phase phase);
+
     bool
     is_pressure(const unsigned int i) const
     {
-      return component[i] == dim;
+      return component[i] >= dim;
     }
 
     const std::vector<unsigned int> component;
@@ -199,6 +225,9 @@ namespace levelsinter
       const typename DoFHandler<dim>::active_cell_iterator &cell);
 
     void
+    add_surface_points(const NonMatching::FEImmersedSurfaceValues<dim> &cut);
+
+    void
     gather_free_faces(
       const typename DoFHandler<dim>::active_cell_iterator &cell);
 
@@ -213,6 +242,13 @@ namespace levelsinter
     FEFaceValues<dim> face_values;
     // Sharp surface measure only.
     const hp::FECollection<dim>                       fe_collection;
+    const hp::MappingCollection<dim>                  mapping_collection;
+    // The extended pressure's rules (NonMatching::FEValues keeps
+    // references to them).
+    const hp::QCollection<dim> uncut_quadrature;
+    const hp::QCollection<1>   cut_quadrature;
+    // The extended pressure: each phase's pressure shape functions.
+    std::array<std::vector<unsigned int>, 2> phase_pressure_dofs;
     std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
     std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
     // At the volume points (sized for the largest rule).

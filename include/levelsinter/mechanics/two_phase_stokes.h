@@ -16,6 +16,7 @@
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/phase_law.h>
+#include <levelsinter/mechanics/velocity_pressure_operator.h>
 #include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
 
@@ -63,7 +64,7 @@ namespace levelsinter
    * (advance_displacement()), a viscoelastic melt its ViscoelasticState.
    */
   template <int dim>
-  class TwoPhaseStokes
+  class TwoPhaseStokes : public VelocityPressureOperator<dim>
   {
   public:
     enum class SurfaceTensionForm
@@ -112,7 +113,7 @@ namespace levelsinter
     /** Number the DoFs (velocity block, then pressure) for the mesh; the
      * displacement starts at zero. */
     void
-    setup_dofs();
+    setup_dofs() override;
 
     /**
      * Assemble matrix and right-hand side for the level set @p alpha.
@@ -128,18 +129,18 @@ namespace levelsinter
     assemble(const LevelSetField<dim>            &alpha,
              const TrilinosWrappers::MPI::Vector &curvature,
              const TrilinosWrappers::MPI::Vector &interface_level_set,
-             const double                         surface_time_step);
+             const double                         surface_time_step) override;
 
     /** Solve; returns the number of outer iterations (0: direct). */
     unsigned int
-    solve();
+    solve() override;
 
     /**
      * Subtract the rigid motion of the solid {alpha < 0} left free by the
      * symmetry planes (remove_free_rigid_motion()): call after solve().
      */
     void
-    remove_rigid_motion(const LevelSetField<dim> &alpha);
+    remove_rigid_motion(const LevelSetField<dim> &alpha) override;
 
     /**
      * Displacement of the elastic solid (ElasticSolidFluid):
@@ -147,7 +148,7 @@ namespace levelsinter
      * Call once per accepted step, after solve().
      */
     void
-    advance_displacement(const double dt);
+    advance_displacement(const double dt) override;
 
     /**
      * The displacement u^{n-1} that the next assembly reads (velocity
@@ -155,35 +156,40 @@ namespace levelsinter
      * mesh change can carry it over.
      */
     BlockVector &
-    displacement()
+    displacement() override
     {
       return old_displacement;
     }
 
     /** The ghosted solution (v, p). */
     const BlockVector &
-    solution() const
+    solution() const override
     {
       return ghosted_solution;
     }
 
     const DoFHandler<dim> &
-    dof_handler() const
+    dof_handler() const override
     {
       return dofs;
     }
 
     const FESystem<dim> &
-    fe() const
+    fe() const override
     {
       return finite_element;
+    }
+
+    /** One continuous pressure for both phases. */
+    unsigned int
+    pressure_component(const Phase) const override
+    {
+      return dim;
     }
 
   private:
     void
     make_constraints();
-    void
-    pin_rigid_body_modes();
     template <typename MatrixType, typename VectorType>
     void
     assemble_into(const LevelSetField<dim>            &alpha,

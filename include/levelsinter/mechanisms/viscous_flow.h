@@ -10,7 +10,7 @@
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <levelsinter/mechanics/phase_law.h>
-#include <levelsinter/mechanics/two_phase_stokes.h>
+#include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/mechanics/viscoelastic_state.h>
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
@@ -153,7 +153,7 @@ namespace levelsinter
     }
 
     /** The last Stokes solution (v, p), for tests and output. */
-    const TwoPhaseStokes<dim> &
+    const VelocityPressureOperator<dim> &
     stokes() const
     {
       return *operator_;
@@ -184,7 +184,7 @@ namespace levelsinter
     const double zero_shear_viscosity;
     // A viscoelastic melt's relaxation time lambda (0 otherwise).
     const double relaxation_time;
-    std::unique_ptr<TwoPhaseStokes<dim>> operator_;
+    std::unique_ptr<VelocityPressureOperator<dim>> operator_;
     std::unique_ptr<MixedCurvatureSolver<dim>> curvature_solver;
     std::shared_ptr<const Function<dim>>       exact_curvature;
     TrilinosWrappers::MPI::Vector              kappa;

@@ -9,7 +9,7 @@
 #include <levelsinter/geometry/normal_gradient_extension.h>
 #include <levelsinter/level_set/level_set_filter.h>
 #include <levelsinter/mechanics/phase_law.h>
-#include <levelsinter/mechanics/two_phase_stokes.h>
+#include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/scene/phase_law_parameters.h>
 #include <levelsinter/scene/viscous_flow_parameters.h>
@@ -111,7 +111,7 @@ namespace levelsinter
     }
 
     /** The elastic problem of the last step (for tests and output). */
-    const TwoPhaseStokes<dim> &
+    const VelocityPressureOperator<dim> &
     mechanics() const
     {
       return *operator_;
@@ -138,13 +138,15 @@ namespace levelsinter
     // whatever the scene's time unit: dt_s = dt x this.
     const double                          seconds_per_time_unit;
     typename TwoPhaseStokes<dim>::Settings settings;
+    // Its `Pressure space` chooses the discretisation.
+    const ViscousFlowParameters           mechanics_parameters;
     const std::unique_ptr<PhaseLaw<dim>>  phases;
     const double                          probe_step; // seconds
     // f / ((2/3)(1 + nu) C_v gamma) of time_step_limit(); 0: no limit.
     const double                          limit_per_h3;
     double                                h_min = 0; // after setup()
     TimerOutput                          &timer;
-    std::unique_ptr<TwoPhaseStokes<dim>>  operator_;
+    std::unique_ptr<VelocityPressureOperator<dim>> operator_;
     NormalGradientExtension<dim>          extension;
     // The step of the last trial, in seconds.
     double       trial_step           = 0;

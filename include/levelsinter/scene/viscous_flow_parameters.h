@@ -24,6 +24,14 @@ namespace levelsinter
       direct
     };
 
+    /** How the pressure sees the interface (doc/numerics.md, "Sharp
+     * interfaces"). */
+    enum class PressureSpace
+    {
+      continuous, // one Q1 pressure across the smeared interface
+      extended    // one Q1 pressure per phase, cut at {alpha_h = 0}
+    };
+
     static void
     declare(ParameterHandler &prm);
 
@@ -43,5 +51,7 @@ namespace levelsinter
     double       solver_tolerance           = 1e-10;
     unsigned int max_iterations             = 500;
     double       capillary_time_step_factor = 1;
+    PressureSpace pressure_space            = PressureSpace::continuous;
+    double        ghost_penalty             = 0.1;
   };
 } // namespace levelsinter

@@ -1,0 +1,429 @@
+#include <deal.II/base/quadrature_lib.h>
+
+#include <deal.II/dofs/dof_renumbering.h>
+#include <deal.II/dofs/dof_tools.h>
+
+#include <deal.II/fe/fe_interface_values.h>
+#include <deal.II/fe/fe_q.h>
+
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparsity_tools.h>
+
+#include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/mechanics/extended_pressure_stokes.h>
+#include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/stokes_assemblers.h>
+
+#include <algorithm>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  namespace
+  {
+    using Location = NonMatching::LocationToLevelSet;
+
+    // Whether a cell at @p location holds part of @p phase.
+    bool
+    holds(const Location location, const Phase phase)
+    {
+      return location != (phase == Phase::solid ? Location::outside :
+                                                  Location::inside);
+    }
+
+    constexpr std::array<Phase, 2> phases = {{Phase::solid, Phase::fluid}};
+  } // namespace
+
+  template <int dim>
+  ExtendedPressureStokes<dim>::ExtendedPressureStokes(
+    const Triangulation<dim> &tria,
+    const Settings           &settings,
+    const PhaseLaw<dim>      &phase_law,
+    const double              ghost_penalty)
+    : settings(settings)
+    , free_motions(dim, settings.symmetry_boundaries)
+    , phase_law(phase_law)
+    , ghost_penalty(ghost_penalty)
+    , finite_element(FE_Q<dim>(1), dim, FE_Q<dim>(1), 1, FE_Q<dim>(1), 1)
+    , dofs(tria)
+  {
+    // ViscousFlowParameters refuses these combinations with the entry
+    // named; the volume-diffusion mechanics sets the sharp form itself.
+    if (settings.form != TwoPhaseStokes<dim>::SurfaceTensionForm::sharp ||
+        settings.direct_solver)
+      throw std::logic_error(
+        "the extended pressure needs the sharp surface-tension form and the "
+        "iterative solver");
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::setup_dofs()
+  {
+    dofs.distribute_dofs(finite_element);
+    std::vector<unsigned int> block_of_component(dim + 2, 1);
+    std::fill_n(block_of_component.begin(), dim, 0);
+    DoFRenumbering::component_wise(dofs, block_of_component);
+    const auto per_block =
+      DoFTools::count_dofs_per_fe_block(dofs, block_of_component);
+    const types::global_dof_index n_v = per_block[0], n_p = per_block[1];
+    const IndexSet owned = dofs.locally_owned_dofs();
+    relevant_dofs        = DoFTools::extract_locally_relevant_dofs(dofs);
+    owned_partitioning   = {owned.get_view(0, n_v),
+                          owned.get_view(n_v, n_v + n_p)};
+    relevant_partitioning = {relevant_dofs.get_view(0, n_v),
+                             relevant_dofs.get_view(n_v, n_v + n_p)};
+    // Without the level set: the zero pressures only remove entries from
+    // this pattern.
+    make_constraints(nullptr);
+    velocity_modes = rigid_body_modes(dofs, owned_partitioning[0]);
+
+    // Cells couple everything but the two pressures with each other; the
+    // faces of the ghost penalty couple each pressure with itself across
+    // them (for_each_penalty_face()).
+    const unsigned int           n = dim + 2;
+    Table<2, DoFTools::Coupling> cells(n, n), schur_cells(n, n);
+    for (unsigned int c = 0; c < n; ++c)
+      for (unsigned int d = 0; d < n; ++d)
+        {
+          const bool pressures = c >= dim && d >= dim;
+          cells[c][d] =
+            pressures && c != d ? DoFTools::none : DoFTools::always;
+          schur_cells[c][d] =
+            pressures && c == d ? DoFTools::always : DoFTools::none;
+        }
+    const MPI_Comm comm = dofs.get_communicator();
+    std::vector<types::global_dof_index> cell_dofs(
+      finite_element.dofs_per_cell),
+      neighbor_dofs(finite_element.dofs_per_cell), pair;
+    const auto make = [&](const Table<2, DoFTools::Coupling> &coupling,
+                          TrilinosWrappers::BlockSparseMatrix &matrix) {
+      BlockDynamicSparsityPattern dsp(relevant_partitioning);
+      DoFTools::make_sparsity_pattern(dofs,
+                                      coupling,
+                                      dsp,
+                                      constraints,
+                                      false,
+                                      Utilities::MPI::this_mpi_process(comm));
+      for_each_penalty_face([&](const auto &cell,
+                                const unsigned int,
+                                const auto &neighbor,
+                                const bool) {
+        cell->get_dof_indices(cell_dofs);
+        neighbor->get_dof_indices(neighbor_dofs);
+        for (const Phase phase : phases)
+          {
+            pair.clear();
+            for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+              if (finite_element.system_to_component_index(i).first ==
+                  pressure_component(phase))
+                {
+                  pair.push_back(cell_dofs[i]);
+                  pair.push_back(neighbor_dofs[i]);
+                }
+            constraints.add_entries_local_to_global(pair, dsp, false);
+          }
+      });
+      SparsityTools::distribute_sparsity_pattern(dsp,
+                                                 owned,
+                                                 comm,
+                                                 relevant_dofs);
+      matrix.reinit(owned_partitioning, dsp, comm);
+    };
+    make(cells, system_matrix);
+    make(schur_cells, schur_matrix);
+    system_rhs.reinit(owned_partitioning, comm);
+    ghosted_solution.reinit(owned_partitioning, relevant_partitioning, comm);
+    old_displacement.reinit(owned_partitioning, relevant_partitioning, comm);
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::make_constraints(
+    const NonMatching::MeshClassifier<dim> *classifier)
+  {
+    make_velocity_constraints(dofs,
+                              relevant_dofs,
+                              settings.symmetry_boundaries,
+                              free_motions,
+                              constraints);
+    if (classifier)
+      {
+        // A phase's pressure lives on the cells that hold the phase (every
+        // cell around a DoF of a locally owned cell is owned or ghost).
+        std::array<std::vector<bool>, 2> used;
+        for (auto &u : used)
+          u.assign(relevant_dofs.n_elements(), false);
+        std::vector<types::global_dof_index> indices(
+          finite_element.dofs_per_cell);
+        const auto pressure_phase = [&](const unsigned int i) {
+          return finite_element.system_to_component_index(i).first - dim;
+        };
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              const Location location =
+                classifier->location_to_level_set(cell);
+              cell->get_dof_indices(indices);
+              for (unsigned int i = 0; i < indices.size(); ++i)
+                if (finite_element.system_to_component_index(i).first >= dim &&
+                    holds(location, phases[pressure_phase(i)]))
+                  used[pressure_phase(i)]
+                      [relevant_dofs.index_within_set(indices[i])] = true;
+            }
+        for (const auto &cell : dofs.active_cell_iterators())
+          if (!cell->is_artificial())
+            {
+              cell->get_dof_indices(indices);
+              for (unsigned int i = 0; i < indices.size(); ++i)
+                if (finite_element.system_to_component_index(i).first >= dim &&
+                    !used[pressure_phase(i)]
+                         [relevant_dofs.index_within_set(indices[i])] &&
+                    constraints.can_store_line(indices[i]) &&
+                    !constraints.is_constrained(indices[i]))
+                  constraints.add_line(indices[i]);
+            }
+      }
+    constraints.close();
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::assemble(
+    const LevelSetField<dim> &alpha,
+    const TrilinosWrappers::MPI::Vector &,
+    const TrilinosWrappers::MPI::Vector &,
+    const double surface_time_step)
+  {
+    system_matrix = 0;
+    system_rhs    = 0;
+    schur_matrix  = 0;
+
+    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
+                                                alpha.alpha());
+    classifier.reclassify();
+    make_constraints(&classifier);
+
+    // The terms: the bulk and ASGS terms per phase, the surface terms once
+    // per cell, the traction on the free box faces.
+    const double gamma       = settings.surface_tension;
+    const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
+    std::vector<std::unique_ptr<StokesAssembler<dim>>> phase_assemblers;
+    phase_assemblers.push_back(std::make_unique<BulkAssembler<dim>>());
+    phase_assemblers.push_back(std::make_unique<StabilisationAssembler<dim>>());
+    std::vector<std::unique_ptr<StokesAssembler<dim>>> surface_assemblers;
+    if (gamma != 0)
+      surface_assemblers.push_back(
+        std::make_unique<TensorialSurfaceTensionAssembler<dim>>(gamma));
+    if (implicit_dt > 0)
+      surface_assemblers.push_back(
+        std::make_unique<LaplaceBeltramiAssembler<dim>>(gamma, implicit_dt));
+    std::vector<std::unique_ptr<StokesFaceAssembler<dim>>> face_assemblers;
+    if (settings.external_pressure != 0)
+      face_assemblers.push_back(
+        std::make_unique<TractionAssembler<dim>>(settings.external_pressure));
+
+    using CellData = StokesCellData<dim>;
+    typename CellData::Inputs inputs{alpha, phase_law, old_displacement};
+    inputs.surface_tension        = gamma;
+    inputs.surface                = CellData::SurfaceMeasure::sharp;
+    inputs.stabilisation_constant = settings.stabilisation_constant;
+    inputs.free_faces             = !face_assemblers.empty();
+    inputs.symmetry_boundaries    = settings.symmetry_boundaries;
+    inputs.extended_pressure      = true;
+
+    CellData         data(finite_element, inputs);
+    CellContribution contribution(finite_element.dofs_per_cell);
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          contribution.reset();
+          data.reinit_cut(cell);
+          for (const Phase phase : phases)
+            if (data.select_phase(phase))
+              for (const auto &assembler : phase_assemblers)
+                assembler->assemble(data, contribution);
+          for (const auto &assembler : surface_assemblers)
+            assembler->assemble(data, contribution);
+          for (const auto &face : data.free_faces)
+            for (const auto &assembler : face_assemblers)
+              assembler->assemble(data, face, contribution);
+          symmetrise(data, contribution);
+          cell->get_dof_indices(contribution.dof_indices);
+          constraints.distribute_local_to_global(contribution.matrix,
+                                                 contribution.rhs,
+                                                 contribution.dof_indices,
+                                                 system_matrix,
+                                                 system_rhs);
+          constraints.distribute_local_to_global(contribution.schur,
+                                                 contribution.dof_indices,
+                                                 schur_matrix);
+        }
+    if (ghost_penalty > 0)
+      assemble_ghost_penalty(alpha, classifier);
+    system_matrix.compress(VectorOperation::add);
+    system_rhs.compress(VectorOperation::add);
+    schur_matrix.compress(VectorOperation::add);
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::assemble_ghost_penalty(
+    const LevelSetField<dim>               &alpha,
+    const NonMatching::MeshClassifier<dim> &classifier)
+  {
+    const GhostPenaltyAssembler<dim> penalty(ghost_penalty);
+    FEInterfaceValues<dim>           values(finite_element,
+                                  QGauss<dim - 1>(2),
+                                  update_gradients | update_JxW_values |
+                                    update_normal_vectors |
+                                    update_quadrature_points);
+    const std::array<PhaseCoefficients, 2> laws = {
+      {phase_law.coefficients({1, 0}), phase_law.coefficients({0, 1})}};
+    FullMatrix<double> matrix, schur;
+    for_each_penalty_face([&](const auto        &cell,
+                              const unsigned int f,
+                              const auto        &neighbor,
+                              const bool         coarser) {
+      const Location here  = classifier.location_to_level_set(cell);
+      const Location there = classifier.location_to_level_set(neighbor);
+      if (here != Location::intersected && there != Location::intersected)
+        return;
+      if (coarser)
+        {
+          const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
+          values.reinit(
+            cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
+        }
+      else
+        values.reinit(cell,
+                      f,
+                      numbers::invalid_unsigned_int,
+                      neighbor,
+                      cell->neighbor_of_neighbor(f),
+                      numbers::invalid_unsigned_int);
+      const unsigned int n = values.n_current_interface_dofs();
+      const double       h = cell_size(cell);
+      for (const Phase phase : phases)
+        if (holds(here, phase) && holds(there, phase))
+          {
+            const PhaseCoefficients &law = laws[phase == Phase::solid ? 0 : 1];
+            matrix.reinit(n, n);
+            schur.reinit(n, n);
+            penalty.assemble(values,
+                             alpha.measure(),
+                             pressure_component(phase),
+                             law.a2 * h * h * h / law.a1,
+                             matrix,
+                             schur);
+            const auto indices = values.get_interface_dof_indices();
+            constraints.distribute_local_to_global(matrix,
+                                                   indices,
+                                                   system_matrix);
+            constraints.distribute_local_to_global(schur,
+                                                   indices,
+                                                   schur_matrix);
+          }
+    });
+  }
+
+  template <int dim>
+  template <typename Callback>
+  void
+  ExtendedPressureStokes<dim>::for_each_penalty_face(
+    const Callback &callback) const
+  {
+    // Each face once: from the finer side, or at one level from the lower
+    // cell id (the lower rank across a partition boundary). Only in the
+    // interface band (its level or finer), which holds the interface
+    // between two mesh changes.
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned() &&
+          cell->level() >= int(settings.band_level))
+        for (const unsigned int f : cell->face_indices())
+          {
+            if (cell->at_boundary(f))
+              continue;
+            const auto neighbor = cell->neighbor(f);
+            if (neighbor->has_children() ||
+                neighbor->level() < int(settings.band_level))
+              continue;
+            const bool coarser = cell->neighbor_is_coarser(f);
+            if (!coarser &&
+                (neighbor->is_locally_owned() ?
+                   neighbor->id() < cell->id() :
+                   neighbor->subdomain_id() < cell->subdomain_id()))
+              continue;
+            callback(cell, f, neighbor, coarser);
+          }
+  }
+
+  template <int dim>
+  unsigned int
+  ExtendedPressureStokes<dim>::solve()
+  {
+    BlockVector owned_solution(owned_partitioning, dofs.get_communicator());
+    const unsigned int iterations =
+      solve_block_system(system_matrix,
+                         schur_matrix.block(1, 1),
+                         velocity_modes,
+                         dim,
+                         system_rhs,
+                         owned_solution,
+                         settings.tolerance,
+                         settings.max_iterations);
+    constraints.distribute(owned_solution);
+    ghosted_solution = owned_solution;
+    return iterations;
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::advance_displacement(const double dt)
+  {
+    // u^n = u^{n-1} + dt v^n (Eq. 92) on the velocity block.
+    BlockVector owned(owned_partitioning, dofs.get_communicator());
+    BlockVector velocity(owned_partitioning, dofs.get_communicator());
+    owned    = old_displacement;
+    velocity = ghosted_solution;
+    owned.block(0).add(dt, velocity.block(0));
+    old_displacement = owned;
+  }
+
+  template <int dim>
+  void
+  ExtendedPressureStokes<dim>::remove_rigid_motion(
+    const LevelSetField<dim> &alpha)
+  {
+    remove_free_rigid_motion(dofs, alpha, free_motions, ghosted_solution);
+  }
+
+  template <int dim>
+  std::unique_ptr<VelocityPressureOperator<dim>>
+  make_velocity_pressure_operator(
+    const Triangulation<dim>                     &tria,
+    const typename TwoPhaseStokes<dim>::Settings &settings,
+    const PhaseLaw<dim>                          &law,
+    const ViscousFlowParameters                  &parameters)
+  {
+    if (parameters.pressure_space ==
+        ViscousFlowParameters::PressureSpace::extended)
+      return std::make_unique<ExtendedPressureStokes<dim>>(
+        tria, settings, law, parameters.ghost_penalty);
+    return std::make_unique<TwoPhaseStokes<dim>>(tria, settings, law);
+  }
+
+  template class ExtendedPressureStokes<2>;
+  template class ExtendedPressureStokes<3>;
+  template std::unique_ptr<VelocityPressureOperator<2>>
+  make_velocity_pressure_operator(const Triangulation<2> &,
+                                  const TwoPhaseStokes<2>::Settings &,
+                                  const PhaseLaw<2> &,
+                                  const ViscousFlowParameters &);
+  template std::unique_ptr<VelocityPressureOperator<3>>
+  make_velocity_pressure_operator(const Triangulation<3> &,
+                                  const TwoPhaseStokes<3>::Settings &,
+                                  const PhaseLaw<3> &,
+                                  const ViscousFlowParameters &);
+} // namespace levelsinter
