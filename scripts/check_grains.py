@@ -24,12 +24,20 @@ if a check fails.
       at the last step of grain_boundaries.csv every pair's
       centre_distance_change and radius agree within the tolerance of
       their mean.
+  check_grains.py kinetics RUN R C_GB T_FIT --csv OUT.csv
+      two equal spheres (3D contact law): the grain-boundary radius a
+      against the initial-stage law derived for the model in
+      doc/numerics.md, (a/R)^6 = 192 C_gb t / R^4 (exponents n = 6, m = 4
+      of the paper's Table 2), and the approach h (half the centre
+      distance's decrease) against Coble's neck geometry h = a^2 / (4 R);
+      the exponent 1/n of a fitted over t >= T_FIT; writes OUT.csv.
   check_grains.py same RUN_A RUN_B COLUMN RELATIVE_TOLERANCE
       COLUMN of RUN_A/metrics.csv and RUN_B/metrics.csv agree at the rows of
       equal time, relative to the largest |value| of RUN_A.
 """
 import csv
 import math
+import os
 import sys
 
 
@@ -119,6 +127,43 @@ def same(run_a, run_b, column, tolerance):
         fail(f"{column} differs by {worst:.3g} > {tolerance}")
 
 
+def kinetics(run, radius, c_gb, t_fit, out):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import validation_data
+    metrics = [r for r in rows(run + "/metrics.csv") if r["time"] > 0]
+    table = []
+    for r in metrics:
+        a = r["grain_boundary_radius_mean"]
+        h = -r["grain_centre_distance_change_mean"] * run_distance(run) / 2
+        law = (192 * c_gb * r["time"] / radius ** 4) ** (1 / 6)
+        table.append((r["time"], a / radius, law, (a / radius / law) ** 6,
+                      h / radius, a * a / (4 * radius * radius)))
+    fit = [(math.log(t), math.log(a)) for t, a, *_ in table if t >= t_fit]
+    n = len(fit)
+    mx = sum(x for x, _ in fit) / n
+    my = sum(y for _, y in fit) / n
+    slope = sum((x - mx) * (y - my) for x, y in fit) / \
+        sum((x - mx) ** 2 for x, _ in fit)
+    ratios = [row[3] for row in table if row[0] >= t_fit]
+    print(f"kinetics: a ~ t^{slope:.4f} (n = {1 / slope:.2f}) over "
+          f"t >= {t_fit} ({n} rows); (a/R)^6 / (192 C t / R^4) from "
+          f"{min(ratios):.3f} to {max(ratios):.3f}; last row a/R "
+          f"{table[-1][1]:.4f} against the law's {table[-1][2]:.4f}, "
+          f"h/R {table[-1][4]:.5f} against a^2/(4R^2) {table[-1][5]:.5f}")
+    validation_data.refuse_shorter(out, table)
+    with open(out, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time", "a_over_R", "law_a_over_R", "ratio_sixth_power",
+                         "approach_over_R", "coble_approach_over_R"])
+        writer.writerows([[f"{v:.6g}" for v in row] for row in table])
+
+
+def run_distance(run):
+    # The centre distance at t = 0, from grain_boundaries.csv.
+    first = rows(run + "/grain_boundaries.csv")[0]
+    return first["centre_distance"] / (1 + first["centre_distance_change"])
+
+
 if __name__ == "__main__":
     mode, args = sys.argv[1], sys.argv[2:]
     if mode == "law":
@@ -129,6 +174,8 @@ if __name__ == "__main__":
         centroids(args[0], args[1], float(args[2]), float(args[3]))
     elif mode == "equal":
         equal(args[0], float(args[1]))
+    elif mode == "kinetics":
+        kinetics(args[0], float(args[1]), float(args[2]), float(args[3]), args[5])
     elif mode == "same":
         same(args[0], args[1], args[2], float(args[3]))
     else:

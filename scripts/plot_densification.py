@@ -2,7 +2,7 @@
 """The densification curve of a grain-boundary run (doc/validation.md,
 "Grain boundaries and densification").
 
-usage: plot_densification.py RUN_DIRECTORY OUT.csv OUT.png [LABEL=RUN ...]
+usage: plot_densification.py RUN_DIRECTORY OUT.png --csv OUT.csv [LABEL=RUN ...]
 
 Reads RUN_DIRECTORY/metrics.csv (a scene with `Grain boundaries`), writes
 OUT.csv with the columns time, grain_relative_density (where the grain
@@ -25,10 +25,10 @@ import matplotlib.pyplot as plt
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import validation_data
 
-if len(sys.argv) < 4:
+if len(sys.argv) < 5 or sys.argv[3] != "--csv":
     sys.exit(__doc__)
-run, out_csv, out_png = sys.argv[1:4]
-extra = [item.split("=", 1) for item in sys.argv[4:]]
+run, out_png, _, out_csv = sys.argv[1:5]
+extra = [item.split("=", 1) for item in sys.argv[5:]]
 
 
 def read(directory):

@@ -123,3 +123,45 @@ restart_test(restart_grains_two_2d_np1_np1 ${GRAIN_SCENES}/grains_two_2d.prm
   1 1 1e-7 "${RESTART_GRAINS_IGNORED}" ${RESTART_GRAINS_ARGS})
 restart_test(restart_grains_two_2d_np1_np2 ${GRAIN_SCENES}/grains_two_2d.prm
   1 2 1e-6 "${RESTART_GRAINS_IGNORED};cells;dofs" ${RESTART_GRAINS_ARGS})
+
+# --- Studies (validation-long; doc/validation.md, "Grain boundaries and
+# densification") ---------------------------------------------------------
+# The axisymmetric pair to t = 0.5 at R/h = 16 and 32 (Maximum level 3, 4):
+# the grain-boundary radius against the initial-stage law of the model,
+# (a/R)^6 = 192 C_gb t / R^4, and the approach against Coble's neck
+# geometry h = a^2 / (4 R).
+foreach(case "3;0.075;0.05;16" "4;0.0375;0.025;32")
+  list(GET case 0 level)
+  list(GET case 1 filter)
+  list(GET case 2 band)
+  list(GET case 3 resolution)
+  set(name study_grains_two_axisymmetric_R${resolution})
+  add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "Output/Metrics interval=1"
+    --set "Mesh refinement/Maximum level=${level}"
+    --set "Level set/Filter thickness=${filter}"
+    --set "Mesh refinement/Band width=${band}"
+    --set "Output/Directory=${name}"
+    ${GRAIN_SCENES}/grains_two_axisymmetric.prm)
+  add_test(NAME ${name} COMMAND ${CHECK_GRAINS} kinetics ${name} 0.2 1e-6 0.05
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_two_axisymmetric_R${resolution}.csv)
+  set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
+    LABELS validation-long)
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
+    LABELS validation-long)
+endforeach()
+# The 8-grain packing to t = 2.4 (25 steps, about 2-5 min on 1 core): the
+# densification curve.
+add_test(NAME study_grains_packing_8_3d_run COMMAND $<TARGET_FILE:levelsinter>
+  --overwrite --set "Output/Field formats=none"
+  --set "Output/Directory=study_grains_packing_8_3d"
+  ${GRAIN_SCENES}/grains_packing_8_3d.prm)
+add_test(NAME study_grains_packing_8_3d
+  COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py
+    study_grains_packing_8_3d
+    ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.png
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.csv)
+set_tests_properties(study_grains_packing_8_3d_run PROPERTIES
+  FIXTURES_SETUP study_grains_packing_8_3d LABELS validation-long)
+set_tests_properties(study_grains_packing_8_3d PROPERTIES
+  FIXTURES_REQUIRED study_grains_packing_8_3d LABELS validation-long)
