@@ -157,7 +157,7 @@ add_test(NAME study_grains_packing_8_3d_run COMMAND $<TARGET_FILE:levelsinter>
   --set "Output/Directory=study_grains_packing_8_3d"
   ${GRAIN_SCENES}/grains_packing_8_3d.prm)
 add_test(NAME study_grains_packing_8_3d
-  COMMAND ${Python3_EXECUTABLE} ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py
+  COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py
     study_grains_packing_8_3d
     ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.png
     --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.csv)
