@@ -1,3 +1,4 @@
+#include <levelsinter/analysis/grain_measures.h>
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/scene_postprocessors.h>
 #include <levelsinter/level_set/interface_measures.h>
@@ -323,6 +324,13 @@ namespace levelsinter
       list.push_back(std::move(packing));
     if (centres)
       list.push_back(std::move(centres));
+    // The grains of a scene with grain boundaries, measured at the
+    // mechanism's centres.
+    for (const auto &mechanism : mechanisms)
+      if (const auto *grains =
+            dynamic_cast<const GrainBoundaryDiffusion<dim> *>(mechanism.get()))
+        list.push_back(std::make_unique<GrainMeasures<dim>>(
+          *grains, scene.output.directory, comm, timer));
     return list;
   }
 

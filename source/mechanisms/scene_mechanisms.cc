@@ -1,3 +1,4 @@
+#include <levelsinter/mechanisms/grain_boundary_diffusion.h>
 #include <levelsinter/mechanisms/prescribed_velocity.h>
 #include <levelsinter/mechanisms/scene_mechanisms.h>
 #include <levelsinter/mechanisms/viscous_flow.h>
@@ -27,12 +28,27 @@ namespace levelsinter
                                            timer,
                                            scene.phase_law));
     if (scene.surface_diffusion.enabled)
-      mechanisms.push_back(std::make_unique<SurfaceDiffusion<dim>>(
-        scene.surface_diffusion,
-        scene.seconds_per_time_unit(),
-        scene.domain.symmetry_planes,
-        filter,
-        timer));
+      {
+        auto surface_diffusion = std::make_unique<SurfaceDiffusion<dim>>(
+          scene.surface_diffusion,
+          scene.seconds_per_time_unit(),
+          scene.domain.symmetry_planes,
+          filter,
+          timer);
+        // After surface diffusion (SceneParameters requires it): it reads
+        // that solve's curvature and normals of the same step.
+        std::unique_ptr<Mechanism<dim>> grain_boundaries;
+        if (scene.grain_boundaries.enabled)
+          grain_boundaries = std::make_unique<GrainBoundaryDiffusion<dim>>(
+            scene.grain_boundaries,
+            scene.geometry.particles,
+            scene.seconds_per_time_unit(),
+            *surface_diffusion,
+            timer);
+        mechanisms.push_back(std::move(surface_diffusion));
+        if (grain_boundaries)
+          mechanisms.push_back(std::move(grain_boundaries));
+      }
     // SceneParameters refuses it with viscous flow and without the
     // elastic-solid law. With surface diffusion as well (Eq. 118,
     // Algorithm 4) the time loop adds both velocities, transports once and

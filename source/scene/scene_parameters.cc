@@ -77,6 +77,7 @@ namespace levelsinter
     OutputParameters::declare(prm);
     AnalysisParameters::declare(prm);
     PhaseLawParameters::declare(prm);
+    GrainBoundaryParameters::declare(prm);
     declare_renamed_entries(prm, renamed_entries);
   }
 
@@ -173,6 +174,7 @@ namespace levelsinter
         output.parse(prm);
         analysis.parse(prm, dimension);
         phase_law.parse(prm);
+        grain_boundaries.parse(prm);
         resolve_automatic_values();
         check_across_sections();
       }
@@ -418,6 +420,9 @@ namespace levelsinter
                          geometry.particle_origins,
                          h_band);
 
+    if (grain_boundaries.enabled)
+      check_grains();
+
     // Refuse a mesh that cannot fit in memory before anything is written.
     const double cells  = estimated_initial_cells();
     const double bytes  = cells * bytes_per_cell(d);
@@ -435,6 +440,61 @@ namespace levelsinter
              << " GB of memory of this machine; lower the level or the "
              << "band width";
         fail_entry("Mesh refinement/Maximum level", what.str());
+      }
+  }
+
+  void
+  SceneParameters::check_grains() const
+  {
+    const std::string entry = "Grain boundaries/Enabled";
+    if (!surface_diffusion.enabled)
+      fail_entry(entry,
+                 "needs 'Surface diffusion/Enabled = true': surface "
+                 "diffusion spreads the matter the grain boundaries "
+                 "deposit at the necks and gives the neck curvature");
+    if (viscous_flow.enabled)
+      fail_entry(entry,
+                 "cannot be combined with 'Viscous flow/Enabled = true' "
+                 "(grains are crystalline solids, viscous flow is for "
+                 "amorphous particles)");
+    if (!geometry.particles_are_bodies() || geometry.particles.size() < 2)
+      fail_entry(entry,
+                 "needs two or more particles in Geometry/Particles (each "
+                 "particle is a grain)");
+    // A grain boundary on the domain's boundary is not measured: a grain
+    // lies on a symmetry plane through its centre or off the planes.
+    for (unsigned int i = 0; i < geometry.particles.size(); ++i)
+      {
+        const auto  &p = geometry.particles[i];
+        const double r = p[dimension];
+        for (unsigned int k = 0; k < dimension; ++k)
+          {
+            const double tolerance =
+              1e-9 * (domain.upper_corner[k] - domain.lower_corner[k]);
+            const bool on_lower =
+              std::abs(p[k] - domain.lower_corner[k]) <= tolerance;
+            const bool on_upper =
+              std::abs(p[k] - domain.upper_corner[k]) <= tolerance;
+            const auto is_plane = [&](const types::boundary_id id) {
+              return std::find(domain.symmetry_planes.begin(),
+                               domain.symmetry_planes.end(),
+                               id) != domain.symmetry_planes.end();
+            };
+            const bool inside = p[k] - r >= domain.lower_corner[k] - tolerance &&
+                                p[k] + r <= domain.upper_corner[k] + tolerance;
+            if (!inside && !(on_lower && is_plane(2 * k)) &&
+                !(on_upper && is_plane(2 * k + 1)))
+              {
+                std::ostringstream what;
+                what << "particle " << i + 1 << " crosses the domain's "
+                     << "boundary along axis " << "xyz"[k]
+                     << ": with grain boundaries every grain lies inside "
+                     << "the domain or is cut in half by a symmetry plane "
+                     << "through its centre (mirrored grains off their "
+                     << "centre are not supported yet)";
+                fail_entry(entry, what.str());
+              }
+          }
       }
   }
 } // namespace levelsinter

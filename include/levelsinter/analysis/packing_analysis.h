@@ -4,7 +4,7 @@
 
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/analysis/pores.h>
-#include <levelsinter/analysis/power_cells.h>
+#include <levelsinter/geometry/power_cells.h>
 #include <levelsinter/io/metrics_log.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/scene_parameters.h>

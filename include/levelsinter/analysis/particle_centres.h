@@ -6,7 +6,7 @@
 #include <boost/serialization/vector.hpp>
 
 #include <levelsinter/analysis/neck.h>
-#include <levelsinter/analysis/power_cells.h>
+#include <levelsinter/geometry/power_cells.h>
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/scene/domain_parameters.h>
 

@@ -4,7 +4,7 @@
 
 #include <deal.II/numerics/data_out.h>
 
-#include <levelsinter/analysis/power_cells.h>
+#include <levelsinter/geometry/power_cells.h>
 #include <levelsinter/level_set/level_set_field.h>
 
 #include <vector>

@@ -5,6 +5,7 @@
 #include <levelsinter/scene/analysis_parameters.h>
 #include <levelsinter/scene/domain_parameters.h>
 #include <levelsinter/scene/geometry_parameters.h>
+#include <levelsinter/scene/grain_boundary_parameters.h>
 #include <levelsinter/scene/level_set_parameters.h>
 #include <levelsinter/scene/materials_parameters.h>
 #include <levelsinter/scene/output_parameters.h>
@@ -98,6 +99,7 @@ namespace levelsinter
     OutputParameters             output;
     AnalysisParameters           analysis;
     PhaseLawParameters           phase_law;
+    GrainBoundaryParameters      grain_boundaries;
 
     /** Warnings for the user (deprecated entries, legitimate but unusual
      * choices); the driver prints them before the run. */
@@ -114,5 +116,11 @@ namespace levelsinter
      * legitimate combinations add a warning. */
     void
     check_across_sections();
+
+    /** The grains' rules (Grain boundaries/Enabled): surface diffusion on,
+     * two or more particles, no grain cut by the domain's boundary but by
+     * a symmetry plane through its centre. */
+    void
+    check_grains() const;
   };
 } // namespace levelsinter

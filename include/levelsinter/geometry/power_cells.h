@@ -2,6 +2,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <cmath>
 #include <vector>
 
 namespace levelsinter
@@ -14,7 +15,8 @@ namespace levelsinter
    * balls the cell boundary is their radical plane). An Eulerian level set
    * carries no particle labels, so the analysis gives the solid in the
    * power cell of particle i to particle i (its centroid, its id in the
-   * output).
+   * output). The grains of the grain-boundary mechanism are the same
+   * cells of the moving grain centres (geometry/grain_boundaries.h).
    */
   template <int dim>
   class PowerCells
@@ -45,12 +47,21 @@ namespace levelsinter
       return centre;
     }
 
-  private:
+    /** The power |x - c_i|^2 - r_i^2 of @p x for particle @p i. */
     double
     power(const Point<dim> &x, const unsigned int i) const
     {
       return x.distance_square(centre[i]) - squared_radius[i];
     }
+
+    /** r_i. */
+    double
+    radius(const unsigned int i) const
+    {
+      return std::sqrt(squared_radius[i]);
+    }
+
+  private:
 
     std::vector<Point<dim>> centre;
     std::vector<double>     squared_radius;

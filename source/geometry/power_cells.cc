@@ -1,4 +1,4 @@
-#include <levelsinter/analysis/power_cells.h>
+#include <levelsinter/geometry/power_cells.h>
 
 #include <limits>
 

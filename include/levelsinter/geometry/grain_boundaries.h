@@ -1,0 +1,93 @@
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/geometry/power_cells.h>
+#include <levelsinter/level_set/level_set_field.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  /**
+   * Grains as the solid in the power cells of their centres (PowerCells),
+   * and the grain boundaries between them: flat, on the radical plane of
+   * each pair, ending at the free surface (the triple line, the neck root)
+   * or at a third grain (a triple junction). doc/numerics.md, "Grain
+   * boundaries and densification".
+   */
+  namespace grain_geometry
+  {
+    /** The grain boundary of grains i < j, measured on the level set. */
+    template <int dim>
+    struct GrainBoundary
+    {
+      unsigned int i = 0;
+      unsigned int j = 0;
+      // On the line of centres where the powers of i and j are equal.
+      Point<dim> origin;
+      // (c_j - c_i) / |c_j - c_i|: the boundary's normal.
+      Tensor<1, dim> normal;
+      double         centre_distance = 0;
+      // A plane 2D boundary (a strip), not a disc (3D, axisymmetric).
+      bool strip = false;
+      // a: the half width (2D), the radius of the disc of the same area
+      // (3D, axisymmetric).
+      double radius = 0;
+      // 2D: the distances from the origin to the two ends along +t and -t
+      // (t the normal turned by +90 degrees), the mirrored one where a ray
+      // leaves the domain.
+      double end_distance[2] = {0, 0};
+      // The whole boundary (per unit depth in 2D) and its part in the
+      // domain (symmetry planes cut it).
+      double area           = 0;
+      double area_in_domain = 0;
+      // P and G of the contact law (doc/numerics.md): the length of the
+      // triple line (2 per unit depth in 2D) and pi a^4 / 8 (3D) or
+      // 2 a^3 / 3 (2D), with N = G gamma_s u / C_gb - F.
+      double perimeter  = 0;
+      double resistance = 0;
+    };
+
+    /**
+     * The grain boundaries of the grains @p grains (their centres and
+     * weights) on @p level_set: the pairs within 10 % of touching whose
+     * radical plane meets the solid between them, with rays in that plane
+     * to the interface (RayCaster) or to a third grain's cell. Collective
+     * (one reduction for all rays).
+     */
+    template <int dim>
+    std::vector<GrainBoundary<dim>>
+    find_grain_boundaries(const LevelSetField<dim> &level_set,
+                          const PowerCells<dim>    &grains);
+
+    /**
+     * The kernel about the triple line of @p boundary at @p x: phi(zeta /
+     * l) phi((rho - a) / l), zeta the distance from the boundary's plane,
+     * rho from the line of centres (in 2D to the end on x's side), phi(s)
+     * = (1 + cos pi s) / 2 on |s| < 1, else 0.
+     */
+    template <int dim>
+    double
+    triple_line_weight(const GrainBoundary<dim> &boundary,
+                       const Point<dim>         &x,
+                       const double              width);
+
+    /**
+     * Per cell of the level set's mesh (active cell index; locally owned
+     * cells only): the grain whose cell holds the cell's centre, -1 on
+     * cells with no solid (alpha > 0 at every vertex); and 1 where the
+     * solid vertices belong to two or more grains (a grain boundary or a
+     * triple line crosses the cell), else 0, if @p boundary is given.
+     */
+    template <int dim>
+    void
+    cell_grains(const LevelSetField<dim> &level_set,
+                const PowerCells<dim>    &grains,
+                dealii::Vector<float>    &grain_id,
+                dealii::Vector<float>    *boundary = nullptr);
+  } // namespace grain_geometry
+} // namespace levelsinter

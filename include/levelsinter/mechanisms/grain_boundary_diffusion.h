@@ -1,0 +1,147 @@
+#pragma once
+
+#include <deal.II/base/timer.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <levelsinter/geometry/grain_boundaries.h>
+#include <levelsinter/mechanisms/mechanism.h>
+#include <levelsinter/mechanisms/surface_diffusion.h>
+#include <levelsinter/scene/grain_boundary_parameters.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  /**
+   * Grain-boundary diffusion between rigid grains (doc/numerics.md, "Grain
+   * boundaries and densification"): each particle is a grain, the solid in
+   * the power cell of its moving centre. Each step finds the grain
+   * boundaries, reads the neck-root curvature of the surface-diffusion
+   * solve, solves the force balance of all grains together for their
+   * velocities (the contact law N = G gamma_s u / C_gb - gamma_s (P
+   * sin(psi/2) - A kappa_root) of Bouvard and McMeeking), and adds to the
+   * interface velocity each grain's rigid velocity in its cell and the
+   * deposition, at the triple lines, of the matter the approach takes out
+   * of the grain boundaries. Built after SurfaceDiffusion, whose solve of
+   * the same step it reads.
+   */
+  template <int dim>
+  class GrainBoundaryDiffusion : public Mechanism<dim>
+  {
+  public:
+    GrainBoundaryDiffusion(const GrainBoundaryParameters          &parameters,
+                           const std::vector<std::vector<double>> &particles,
+                           const double                 seconds_per_time_unit,
+                           const SurfaceDiffusion<dim> &surface_diffusion,
+                           TimerOutput                 &timer);
+
+    std::string
+    name() const override
+    {
+      return "grain-boundary diffusion";
+    }
+
+    /** Nothing lives on the mesh: the grains' state is their centres. */
+    void
+    setup(const LevelSetField<dim> &) override
+    {}
+
+    void
+    add_velocity(const LevelSetField<dim> &alpha,
+                 const double              t,
+                 const double              dt,
+                 VelocityField<dim>       &velocity) override;
+
+    void
+    add_probe_velocity(const LevelSetField<dim> &alpha,
+                       const double              t,
+                       VelocityField<dim>       &velocity) override;
+
+    /** The centres move by the trial's velocities times its dt. */
+    void
+    accept_step(const LevelSetField<dim> &alpha) override;
+
+    /**
+     * No grain boundary closes, and no deposition moves the surface, by
+     * more than half a finest cell in a step (the last velocities).
+     */
+    double
+    time_step_limit(const LevelSetField<dim> &alpha) const override;
+
+    /** The centres and the velocities of the last accepted step. */
+    std::string
+    save() const override;
+
+    void
+    load(const std::string &state) override;
+
+    /** grain_boundary_diffusion_grain_id and _boundary (cell fields). */
+    void
+    add_output_fields(const LevelSetField<dim> &alpha,
+                      DataOut<dim>             &data_out) const override;
+
+    /** A grain boundary of the last velocity computation and its flux. */
+    struct Contact
+    {
+      grain_geometry::GrainBoundary<dim> boundary;
+      // The kernel's mean of the surface's curvature about the triple line.
+      double root_curvature = 0;
+      // u = (V_i - V_j) . n, positive when the grains approach.
+      double approach_rate = 0;
+    };
+
+    const std::vector<Contact> &
+    contacts() const
+    {
+      return last_contacts;
+    }
+
+    /** The grains at the accepted centres, with their weights r_i. */
+    PowerCells<dim>
+    grains() const;
+
+    /** The accepted centres (the scene's particle centres at t = 0). */
+    const std::vector<Point<dim>> &
+    centres() const
+    {
+      return centre;
+    }
+
+  private:
+    // Grain boundaries, root curvatures and the trial velocities from the
+    // level set and the accepted centres.
+    void
+    compute(const LevelSetField<dim> &alpha);
+
+    // V_i from the balance of all grains (the contact laws of contacts),
+    // the minimum-norm solution (SVD) so that each cluster's rigid
+    // translation is zero.
+    void
+    solve_grain_velocities();
+
+    // The rigid velocities and the deposition at the nodes, added to
+    // @p velocity.
+    void
+    add_nodal_velocity(const LevelSetField<dim> &alpha,
+                       VelocityField<dim>       &velocity) const;
+
+    const GrainBoundaryParameters parameters;
+    // C_gb in the scene's time unit.
+    const double                  mobility;
+    const SurfaceDiffusion<dim>  &surface_diffusion;
+    TimerOutput                  &timer;
+    std::vector<double>           radii;
+    std::vector<Point<dim>>       centre;
+    std::vector<Tensor<1, dim>>   trial_velocity;
+    double                        trial_dt = 0;
+    std::vector<Contact>          last_contacts;
+    // Per contact: the deposition speed per unit kernel weight, Q / W.
+    std::vector<double>           deposition_speed;
+    double                        deposition_width = 0;
+    // The largest approach rate and deposition speed of the last compute().
+    double max_speed = 0;
+    double h_min     = 0;
+    mutable dealii::Vector<float> grain_id, boundary_indicator;
+  };
+} // namespace levelsinter

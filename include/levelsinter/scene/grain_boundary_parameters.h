@@ -1,0 +1,38 @@
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The `Grain boundaries` subsection: each particle is a grain, and
+   * grain-boundary diffusion between rigid grains densifies (mechanism
+   * GrainBoundaryDiffusion, doc/numerics.md "Grain boundaries and
+   * densification").
+   */
+  struct GrainBoundaryParameters
+  {
+    static void
+    declare(ParameterHandler &prm);
+
+    /** Read and check; throws std::runtime_error naming the entry. */
+    void
+    parse(ParameterHandler &prm);
+
+    /**
+     * sin(psi/2) of the dihedral angle psi, cos(psi/2) = gamma_gb /
+     * (2 gamma_s): the share of the surface tension at the triple line
+     * that pulls the grains together.
+     */
+    double
+    sin_half_dihedral_angle() const;
+
+    bool   enabled            = false;
+    double energy_ratio       = 0; // gamma_gb / gamma_s, in [0, 2)
+    double coefficient        = 0; // C_gb = delta_gb D_gb gamma_s Omega / kT
+    double sliding_resistance = 1; // beta
+    double deposition_width   = 2; // l in finest cells
+  };
+} // namespace levelsinter

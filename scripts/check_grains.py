@@ -1,0 +1,182 @@
+#!/usr/bin/env python3
+"""Checks of the grain-boundary runs (tests/grains.cmake; doc/validation.md,
+"Grain boundaries and densification"). Prints what it measured; exit code 1
+if a check fails.
+
+  check_grains.py law RUN C_GB ENERGY_RATIO BODY_DIM TOLERANCE
+      every contact's approach rate in RUN/grain_boundaries.csv against the
+      two-grain law u = C_gb (P sin(psi/2) - A kappa_root) / G of the radius
+      and root curvature it was computed from (BODY_DIM 2: A = 2a, P = 2,
+      G = 2a^3/3; 3: A = pi a^2, P = 2 pi a, G = pi a^4/8).
+  check_grains.py densify RUN MIN_APPROACH MAX_VOLUME_CHANGE MAX_GRAIN_CHANGE
+      the grains approach by at least MIN_APPROACH (relative, last row of
+      grain_centre_distance_change_mean), |volume_change| and
+      grain_volume_change_max stay below their limits at every row.
+  check_grains.py centroids RUN REFERENCE RELATIVE_TOLERANCE VOLUME_LIMIT
+      the approach of the power-cell centroids of the solid (the packing
+      analysis' centre_distance_change, measured on the level set) beyond
+      that of REFERENCE (the same scene without grain boundaries: surface
+      diffusion moves the centroids too) against the rigid grains'
+      (grain_centre_distance_change_mean) at the last row; and the solid
+      volume the grain boundaries lose, |volume_change - that of
+      REFERENCE|, below VOLUME_LIMIT.
+  check_grains.py equal RUN RELATIVE_TOLERANCE
+      at the last step of grain_boundaries.csv every pair's
+      centre_distance_change and radius agree within the tolerance of
+      their mean.
+  check_grains.py kinetics RUN R C_GB T_FIT --csv OUT.csv
+      two equal spheres (3D contact law): the grain-boundary radius a
+      against the initial-stage law derived for the model in
+      doc/numerics.md, (a/R)^6 = 192 C_gb t / R^4 (exponents n = 6, m = 4
+      of the paper's Table 2), and the approach h (half the centre
+      distance's decrease) against Coble's neck geometry h = a^2 / (4 R);
+      the exponent 1/n of a fitted over t >= T_FIT; writes OUT.csv.
+  check_grains.py same RUN_A RUN_B COLUMN RELATIVE_TOLERANCE
+      COLUMN of RUN_A/metrics.csv and RUN_B/metrics.csv agree at the rows of
+      equal time, relative to the largest |value| of RUN_A.
+"""
+import csv
+import math
+import os
+import sys
+
+
+def rows(path):
+    with open(path) as f:
+        return [{k: float(v) for k, v in row.items()} for row in csv.DictReader(f)]
+
+
+def fail(message):
+    print("FAIL: " + message)
+    sys.exit(1)
+
+
+def law(run, c_gb, ratio, body, tolerance):
+    sin_half = math.sqrt(1 - (ratio / 2) ** 2)
+    worst, count = 0.0, 0
+    for row in rows(run + "/grain_boundaries.csv"):
+        u, a, kappa = row["approach_rate"], row["rate_radius"], row["root_curvature"]
+        if math.isnan(u):
+            continue
+        if body == 2:
+            area, perimeter, g = 2 * a, 2.0, 2 * a ** 3 / 3
+        else:
+            area, perimeter, g = math.pi * a * a, 2 * math.pi * a, math.pi * a ** 4 / 8
+        expected = c_gb * (perimeter * sin_half - area * kappa) / g
+        worst = max(worst, abs(u - expected) / abs(expected))
+        count += 1
+    print(f"law: {count} contacts, largest relative deviation {worst:.3g}")
+    if count == 0 or worst > tolerance:
+        fail(f"approach rate off the law by {worst:.3g} > {tolerance}")
+
+
+def densify(run, min_approach, max_volume, max_grain):
+    metrics = rows(run + "/metrics.csv")
+    approach = -metrics[-1]["grain_centre_distance_change_mean"]
+    volume = max(abs(r["volume_change"]) for r in metrics)
+    grain = max(r["grain_volume_change_max"] for r in metrics)
+    print(f"densify: approach {approach:.4g} at t = {metrics[-1]['time']:.4g}, "
+          f"max |volume_change| {volume:.3g}, max grain_volume_change "
+          f"{grain:.3g}")
+    if not approach >= min_approach:
+        fail(f"approach {approach:.4g} < {min_approach}")
+    if volume > max_volume or grain > max_grain:
+        fail("solid or grain volume not conserved")
+
+
+def centroids(run, reference, tolerance, volume_limit):
+    last = rows(run + "/metrics.csv")[-1]
+    last_reference = rows(reference + "/metrics.csv")[-1]
+    rigid = last["grain_centre_distance_change_mean"]
+    measured = last["centre_distance_change"] - \
+        last_reference["centre_distance_change"]
+    lost = abs(last["volume_change"] - last_reference["volume_change"])
+    print(f"centroids: volume lost to the grain boundaries {lost:.3g}")
+    if lost > volume_limit:
+        fail(f"volume lost {lost:.3g} > {volume_limit}")
+    deviation = abs(measured - rigid) / abs(rigid)
+    print(f"centroids: rigid {rigid:.5g}, centroids {measured:.5g}, "
+          f"relative deviation {deviation:.3g}")
+    if deviation > tolerance:
+        fail(f"deviation {deviation:.3g} > {tolerance}")
+
+
+def equal(run, tolerance):
+    table = rows(run + "/grain_boundaries.csv")
+    last = [r for r in table if r["step"] == table[-1]["step"]]
+    for column in ("centre_distance_change", "radius"):
+        values = [r[column] for r in last]
+        mean = sum(values) / len(values)
+        spread = max(abs(v - mean) for v in values) / abs(mean)
+        print(f"equal: {len(values)} pairs at step {int(last[0]['step'])}, "
+              f"{column} mean {mean:.5g}, spread {spread:.3g}")
+        if spread > tolerance:
+            fail(f"{column} spread {spread:.3g} > {tolerance}")
+
+
+def same(run_a, run_b, column, tolerance):
+    a = {r["time"]: r[column] for r in rows(run_a + "/metrics.csv")}
+    b = {r["time"]: r[column] for r in rows(run_b + "/metrics.csv")}
+    times = sorted(set(a) & set(b))
+    scale = max(abs(v) for v in a.values())
+    worst = max(abs(a[t] - b[t]) for t in times) / scale
+    print(f"same: {column} at {len(times)} common times, final "
+          f"{a[times[-1]]:.5g} vs {b[times[-1]]:.5g}, largest difference "
+          f"{worst:.3g} of {scale:.4g}")
+    if len(times) < 2 or worst > tolerance:
+        fail(f"{column} differs by {worst:.3g} > {tolerance}")
+
+
+def kinetics(run, radius, c_gb, t_fit, out):
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import validation_data
+    metrics = [r for r in rows(run + "/metrics.csv") if r["time"] > 0]
+    table = []
+    for r in metrics:
+        a = r["grain_boundary_radius_mean"]
+        h = -r["grain_centre_distance_change_mean"] * run_distance(run) / 2
+        law = (192 * c_gb * r["time"] / radius ** 4) ** (1 / 6)
+        table.append((r["time"], a / radius, law, (a / radius / law) ** 6,
+                      h / radius, a * a / (4 * radius * radius)))
+    fit = [(math.log(t), math.log(a)) for t, a, *_ in table if t >= t_fit]
+    n = len(fit)
+    mx = sum(x for x, _ in fit) / n
+    my = sum(y for _, y in fit) / n
+    slope = sum((x - mx) * (y - my) for x, y in fit) / \
+        sum((x - mx) ** 2 for x, _ in fit)
+    ratios = [row[3] for row in table if row[0] >= t_fit]
+    print(f"kinetics: a ~ t^{slope:.4f} (n = {1 / slope:.2f}) over "
+          f"t >= {t_fit} ({n} rows); (a/R)^6 / (192 C t / R^4) from "
+          f"{min(ratios):.3f} to {max(ratios):.3f}; last row a/R "
+          f"{table[-1][1]:.4f} against the law's {table[-1][2]:.4f}, "
+          f"h/R {table[-1][4]:.5f} against a^2/(4R^2) {table[-1][5]:.5f}")
+    validation_data.refuse_shorter(out, table)
+    with open(out, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["time", "a_over_R", "law_a_over_R", "ratio_sixth_power",
+                         "approach_over_R", "coble_approach_over_R"])
+        writer.writerows([[f"{v:.6g}" for v in row] for row in table])
+
+
+def run_distance(run):
+    # The centre distance at t = 0, from grain_boundaries.csv.
+    first = rows(run + "/grain_boundaries.csv")[0]
+    return first["centre_distance"] / (1 + first["centre_distance_change"])
+
+
+if __name__ == "__main__":
+    mode, args = sys.argv[1], sys.argv[2:]
+    if mode == "law":
+        law(args[0], float(args[1]), float(args[2]), int(args[3]), float(args[4]))
+    elif mode == "densify":
+        densify(args[0], *map(float, args[1:4]))
+    elif mode == "centroids":
+        centroids(args[0], args[1], float(args[2]), float(args[3]))
+    elif mode == "equal":
+        equal(args[0], float(args[1]))
+    elif mode == "kinetics":
+        kinetics(args[0], float(args[1]), float(args[2]), float(args[3]), args[5])
+    elif mode == "same":
+        same(args[0], args[1], args[2], float(args[3]))
+    else:
+        fail("unknown mode " + mode)

@@ -1,0 +1,244 @@
+#include <levelsinter/geometry/grain_boundaries.h>
+#include <levelsinter/level_set/interface_measures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <set>
+
+namespace levelsinter::grain_geometry
+{
+  namespace
+  {
+    // Unit directions in the plane normal to @p normal: +-t in 2D (t the
+    // normal turned by +90 degrees), 8 evenly spaced in 3D.
+    template <int dim>
+    std::vector<Tensor<1, dim>>
+    in_plane_directions(const Tensor<1, dim> &normal)
+    {
+      std::vector<Tensor<1, dim>> directions;
+      if constexpr (dim == 2)
+        {
+          const Tensor<1, dim> t({-normal[1], normal[0]});
+          directions = {t, -t};
+        }
+      else
+        {
+          Tensor<1, dim> helper;
+          helper[std::abs(normal[0]) < 0.9 ? 0 : 1] = 1;
+          Tensor<1, dim> u = cross_product_3d(normal, helper);
+          u /= u.norm();
+          const Tensor<1, dim> w = cross_product_3d(normal, u);
+          // Half a step off u and w: a symmetry plane through the line of
+          // centres (a coordinate plane; u and w are coordinate axes when
+          // the line of centres is one) then holds no ray, and the rays in
+          // the domain are its share of the boundary.
+          for (unsigned int k = 0; k < 8; ++k)
+            directions.push_back(std::cos((k + 0.5) * M_PI / 4) * u +
+                                 std::sin((k + 0.5) * M_PI / 4) * w);
+        }
+      return directions;
+    }
+
+    double
+    bump(const double s)
+    {
+      return std::abs(s) < 1 ? (1 + std::cos(M_PI * s)) / 2 : 0.;
+    }
+  } // namespace
+
+  template <int dim>
+  std::vector<GrainBoundary<dim>>
+  find_grain_boundaries(const LevelSetField<dim> &level_set,
+                        const PowerCells<dim>    &grains)
+  {
+    const auto        &c = grains.centres();
+    const unsigned int n = c.size();
+    std::vector<GrainBoundary<dim>>           candidates;
+    std::vector<interface_measures::Ray<dim>> rays;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = i + 1; j < n; ++j)
+        {
+          const double d  = c[i].distance(c[j]);
+          const double ri = grains.radius(i), rj = grains.radius(j);
+          if (d >= 1.1 * (ri + rj))
+            continue;
+          GrainBoundary<dim> b;
+          b.i               = i;
+          b.j               = j;
+          b.centre_distance = d;
+          b.normal          = (c[j] - c[i]) / d;
+          // Rounding of the moving centres tilts a normal along an axis by
+          // 1e-15: snap it, so that the rays of a boundary on a mesh line
+          // run exactly along it (RayCaster's box search missed such
+          // nearly parallel rays: exit +infinity at a symmetric pair).
+          for (unsigned int k = 0; k < dim; ++k)
+            if (std::abs(b.normal[k]) < 1e-12)
+              b.normal[k] = 0;
+          b.normal /= b.normal.norm();
+          // |x - c_i|^2 - r_i^2 = |x - c_j|^2 - r_j^2 on the line.
+          b.origin = c[i] + (d * d + ri * ri - rj * rj) / (2 * d) * b.normal;
+          // The rays start 1e-9 R off the plane, inside the cells on j's
+          // side when the plane is a mesh face (the same search dropped
+          // rays along a face); alpha moves by far less than rounding.
+          const Point<dim> start = b.origin + 1e-9 * (ri + rj) * b.normal;
+          for (const auto &t : in_plane_directions(b.normal))
+            rays.push_back({start, t});
+          candidates.push_back(b);
+        }
+    const std::vector<double> exits =
+      interface_measures::RayCaster<dim>(level_set).exit_distances(rays);
+
+    const bool body_3d =
+      level_set.measure().template body_dimension<dim>() == 3;
+    const unsigned int n_rays = dim == 2 ? 2 : 8;
+    std::vector<GrainBoundary<dim>> result;
+    for (unsigned int b = 0; b < candidates.size(); ++b)
+      {
+        auto &boundary = candidates[b];
+        // Along a ray the power of a third grain k minus that of i is
+        // affine: g(s) = g(0) + 2 s t . (c_i - c_k).
+        bool owned = true;
+        std::vector<double> lengths;
+        std::vector<bool>   valid;
+        for (unsigned int r = 0; r < n_rays; ++r)
+          {
+            const auto &ray  = rays[b * n_rays + r];
+            double      exit = exits[b * n_rays + r];
+
+            if (!std::isfinite(exit))
+              {
+                lengths.push_back(0);
+                valid.push_back(false);
+                continue;
+              }
+            for (unsigned int k = 0; k < n; ++k)
+              if (k != boundary.i && k != boundary.j)
+                {
+                  const double g0 = grains.power(ray.origin, k) -
+                                    grains.power(ray.origin, boundary.i);
+                  const double slope =
+                    2 * (ray.direction * (c[boundary.i] - c[k]));
+                  if (g0 <= 0)
+                    owned = false;
+                  else if (slope < 0)
+                    exit = std::min(exit, g0 / -slope);
+                }
+            lengths.push_back(exit);
+            valid.push_back(true);
+          }
+        const unsigned int n_valid = std::count(valid.begin(), valid.end(), true);
+        if (!owned || n_valid == 0)
+          continue;
+        double sum = 0, square = 0;
+        for (unsigned int r = 0; r < n_rays; ++r)
+          if (valid[r])
+            {
+              sum += lengths[r];
+              square += lengths[r] * lengths[r];
+            }
+        if (sum == 0)
+          continue; // the origin lies in the pore
+        if (body_3d)
+          {
+            // dim == 3 (8 rays) or axisymmetric (the one ray along r).
+            boundary.radius         = std::sqrt(square / n_valid);
+            const double a          = boundary.radius;
+            boundary.area           = M_PI * a * a;
+            boundary.area_in_domain = dim == 3 ?
+                                        boundary.area * n_valid / n_rays :
+                                        boundary.area;
+            boundary.perimeter      = 2 * M_PI * a;
+            boundary.resistance     = M_PI * std::pow(a, 4) / 8;
+          }
+        else
+          {
+            for (unsigned int r = 0; r < 2; ++r)
+              boundary.end_distance[r] =
+                valid[r] ? lengths[r] : lengths[1 - r];
+            boundary.strip = true;
+            boundary.radius =
+              (boundary.end_distance[0] + boundary.end_distance[1]) / 2;
+            const double a          = boundary.radius;
+            boundary.area           = 2 * a;
+            boundary.area_in_domain = sum;
+            boundary.perimeter      = 2;
+            boundary.resistance     = 2 * std::pow(a, 3) / 3;
+          }
+        result.push_back(boundary);
+      }
+    return result;
+  }
+
+  template <int dim>
+  double
+  triple_line_weight(const GrainBoundary<dim> &boundary,
+                     const Point<dim>         &x,
+                     const double              width)
+  {
+    const Tensor<1, dim> offset = x - boundary.origin;
+    const double         zeta   = offset * boundary.normal;
+    const Tensor<1, dim> radial = offset - zeta * boundary.normal;
+    double               end    = boundary.radius;
+    if constexpr (dim == 2)
+      if (boundary.strip)
+        {
+          // The end on x's side of the line of centres.
+          const Tensor<1, dim> t({-boundary.normal[1], boundary.normal[0]});
+          end = boundary.end_distance[radial * t >= 0 ? 0 : 1];
+        }
+    return bump(zeta / width) * bump((radial.norm() - end) / width);
+  }
+
+  template <int dim>
+  void
+  cell_grains(const LevelSetField<dim> &level_set,
+              const PowerCells<dim>    &grains,
+              dealii::Vector<float>    &grain_id,
+              dealii::Vector<float>    *boundary)
+  {
+    const auto &dofs = level_set.dof_handler();
+    grain_id.reinit(dofs.get_triangulation().n_active_cells());
+    if (boundary)
+      boundary->reinit(grain_id.size());
+    std::vector<types::global_dof_index> indices(
+      dofs.get_fe().n_dofs_per_cell());
+    std::vector<unsigned int> near;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          // Q1 takes its minimum at a vertex: solid in the cell iff a
+          // vertex value is <= 0. Its dofs are its vertices, in order.
+          cell->get_dof_indices(indices);
+          grains.candidates(cell->center(), cell->diameter() / 2, near);
+          std::set<unsigned int> owners;
+          for (unsigned int v = 0; v < indices.size(); ++v)
+            if (level_set.alpha()(indices[v]) <= 0)
+              owners.insert(grains.owner(cell->vertex(v), near));
+          const auto index = cell->active_cell_index();
+          grain_id(index) =
+            owners.empty() ? -1.f : float(grains.owner(cell->center(), near));
+          if (boundary)
+            (*boundary)(index) = owners.size() >= 2 ? 1.f : 0.f;
+        }
+  }
+
+  template std::vector<GrainBoundary<2>>
+  find_grain_boundaries(const LevelSetField<2> &, const PowerCells<2> &);
+  template std::vector<GrainBoundary<3>>
+  find_grain_boundaries(const LevelSetField<3> &, const PowerCells<3> &);
+  template double
+  triple_line_weight(const GrainBoundary<2> &, const Point<2> &, const double);
+  template double
+  triple_line_weight(const GrainBoundary<3> &, const Point<3> &, const double);
+  template void
+  cell_grains(const LevelSetField<2> &,
+              const PowerCells<2> &,
+              dealii::Vector<float> &,
+              dealii::Vector<float> *);
+  template void
+  cell_grains(const LevelSetField<3> &,
+              const PowerCells<3> &,
+              dealii::Vector<float> &,
+              dealii::Vector<float> *);
+} // namespace levelsinter::grain_geometry

@@ -1,0 +1,357 @@
+#include <deal.II/base/mpi.h>
+
+#include <deal.II/lac/lapack_full_matrix.h>
+
+#include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/mechanisms/grain_boundary_diffusion.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace levelsinter
+{
+  template <int dim>
+  GrainBoundaryDiffusion<dim>::GrainBoundaryDiffusion(
+    const GrainBoundaryParameters          &parameters,
+    const std::vector<std::vector<double>> &particles,
+    const double                            seconds_per_time_unit,
+    const SurfaceDiffusion<dim>            &surface_diffusion,
+    TimerOutput                            &timer)
+    : parameters(parameters)
+    , mobility(parameters.coefficient * seconds_per_time_unit)
+    , surface_diffusion(surface_diffusion)
+    , timer(timer)
+  {
+    for (const auto &p : particles)
+      {
+        Point<dim> c;
+        for (unsigned int d = 0; d < dim; ++d)
+          c[d] = p[d];
+        centre.push_back(c);
+        radii.push_back(p[dim]);
+      }
+    trial_velocity.resize(centre.size());
+  }
+
+  template <int dim>
+  PowerCells<dim>
+  GrainBoundaryDiffusion<dim>::grains() const
+  {
+    std::vector<std::vector<double>> rows;
+    for (unsigned int i = 0; i < centre.size(); ++i)
+      {
+        std::vector<double> row(centre[i].begin_raw(), centre[i].end_raw());
+        row.push_back(radii[i]);
+        rows.push_back(row);
+      }
+    return PowerCells<dim>(rows);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha)
+  {
+    TimerOutput::Scope scope(timer, "grain-boundary diffusion");
+    const auto boundaries =
+      grain_geometry::find_grain_boundaries(alpha, grains());
+    h_min            = finest_cell_size(alpha.dof_handler().get_triangulation());
+    deposition_width = parameters.deposition_width * h_min;
+
+    // Per boundary, over the discrete interface: the deposition's volume
+    // rate per unit speed, int I_h(w N) . n (W), and int I_h(w kappa),
+    // int I_h(w) for the mean root curvature; one pass for all.
+    const unsigned int  nb = boundaries.size();
+    std::vector<double> sums(3 * nb, 0.);
+    const auto         &geometry = surface_diffusion.geometry();
+    const auto         &kappa    = geometry.curvature();
+    const auto         &normals  = geometry.nodal_normals();
+    std::vector<types::global_dof_index> indices(alpha.fe().n_dofs_per_cell());
+    std::vector<double>                  w(indices.size());
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.surface_flags =
+      update_values | update_JxW_values | update_normal_vectors;
+    integrands.on_surface = [&](const auto &cell, const auto &values) {
+      // Q1: the cell's dofs are its vertices, in order.
+      cell->get_dof_indices(indices);
+      for (unsigned int b = 0; b < nb; ++b)
+        {
+          const auto  &boundary = boundaries[b];
+          const double reach    = std::max({boundary.radius,
+                                         boundary.end_distance[0],
+                                         boundary.end_distance[1]}) +
+                               2 * deposition_width + cell->diameter();
+          if (cell->center().distance(boundary.origin) > reach)
+            continue;
+          bool any = false;
+          for (unsigned int v = 0; v < indices.size(); ++v)
+            {
+              w[v] = grain_geometry::triple_line_weight(boundary,
+                                                        cell->vertex(v),
+                                                        deposition_width);
+              any  = any || w[v] > 0;
+            }
+          if (!any)
+            continue;
+          for (const unsigned int q : values.quadrature_point_indices())
+            {
+              double         weight = 0, weighted_kappa = 0;
+              Tensor<1, dim> weighted_normal;
+              for (unsigned int v = 0; v < indices.size(); ++v)
+                {
+                  const double phi = values.shape_value(v, q) * w[v];
+                  weight += phi;
+                  weighted_kappa += phi * kappa(indices[v]);
+                  for (unsigned int c = 0; c < dim; ++c)
+                    weighted_normal[c] += phi * normals[c](indices[v]);
+                }
+              const double JxW = alpha.measure().JxW(values, q);
+              sums[3 * b] += weighted_normal * values.normal_vector(q) * JxW;
+              sums[3 * b + 1] += weighted_kappa * JxW;
+              sums[3 * b + 2] += weight * JxW;
+            }
+        }
+    };
+    interface_measures::integrate_regions(alpha, integrands);
+    Utilities::MPI::sum(sums, alpha.dof_handler().get_communicator(), sums);
+
+    // A boundary whose triple line the kernel does not see on the
+    // interface has no neck to deposit at: no contact.
+    last_contacts.clear();
+    std::vector<double> deposition_weight;
+    for (unsigned int b = 0; b < nb; ++b)
+      if (sums[3 * b] > 0 && sums[3 * b + 2] > 0)
+        {
+          Contact contact;
+          contact.boundary       = boundaries[b];
+          contact.root_curvature = sums[3 * b + 1] / sums[3 * b + 2];
+          last_contacts.push_back(contact);
+          deposition_weight.push_back(sums[3 * b]);
+        }
+    solve_grain_velocities();
+
+    // The volume rate the approach takes out of a boundary (its part in
+    // the domain) goes back at its triple line.
+    deposition_speed.clear();
+    max_speed = 0;
+    for (unsigned int k = 0; k < last_contacts.size(); ++k)
+      {
+        const auto &contact = last_contacts[k];
+        deposition_speed.push_back(contact.approach_rate *
+                                   contact.boundary.area_in_domain /
+                                   deposition_weight[k]);
+        max_speed = std::max({max_speed,
+                              std::abs(contact.approach_rate),
+                              std::abs(deposition_speed.back())});
+      }
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::solve_grain_velocities()
+  {
+    const unsigned int n = centre.size();
+    std::fill(trial_velocity.begin(), trial_velocity.end(), Tensor<1, dim>());
+    if (last_contacts.empty())
+      return;
+    // In units gamma_s = C_gb = 1: K_ij = G(a), F_ij = P sin(psi/2) -
+    // A kappa_root; V scales with C_gb (the mobility).
+    LAPACKFullMatrix<double> matrix(dim * n, dim * n);
+    dealii::Vector<double>   rhs(dim * n);
+    const double             sin_half = parameters.sin_half_dihedral_angle();
+    const double             beta     = parameters.sliding_resistance;
+    for (const auto &contact : last_contacts)
+      {
+        const auto    &b = contact.boundary;
+        const auto    &m = b.normal;
+        const double   K = b.resistance;
+        const double   F = b.perimeter * sin_half - b.area * contact.root_curvature;
+        for (unsigned int p = 0; p < dim; ++p)
+          {
+            for (unsigned int q = 0; q < dim; ++q)
+              {
+                const double B =
+                  K * (m[p] * m[q] + beta * ((p == q) - m[p] * m[q]));
+                matrix(b.i * dim + p, b.i * dim + q) += B;
+                matrix(b.j * dim + p, b.j * dim + q) += B;
+                matrix(b.i * dim + p, b.j * dim + q) -= B;
+                matrix(b.j * dim + p, b.i * dim + q) -= B;
+              }
+            rhs(b.i * dim + p) += F * m[p];
+            rhs(b.j * dim + p) -= F * m[p];
+          }
+      }
+    // The minimum-norm solution: no component in the null space (each
+    // cluster's rigid translation, the grains without contact). Singular
+    // values below 1e-10 of the largest count as zero (a contact whose
+    // G = pi a^4 / 8 is that much smaller is one just forming).
+    matrix.compute_svd();
+    const auto            &u  = matrix.get_svd_u();
+    const auto            &vt = matrix.get_svd_vt();
+    const double           s_max = matrix.singular_value(0);
+    dealii::Vector<double> x(dim * n);
+    for (unsigned int k = 0; k < dim * n; ++k)
+      {
+        const double s = matrix.singular_value(k);
+        if (!(s > 1e-10 * s_max))
+          break;
+        double projection = 0;
+        for (unsigned int r = 0; r < dim * n; ++r)
+          projection += u(r, k) * rhs(r);
+        for (unsigned int r = 0; r < dim * n; ++r)
+          x(r) += projection / s * vt(k, r);
+      }
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int p = 0; p < dim; ++p)
+        trial_velocity[i][p] = mobility * x(i * dim + p);
+    for (auto &contact : last_contacts)
+      contact.approach_rate =
+        (trial_velocity[contact.boundary.i] - trial_velocity[contact.boundary.j]) *
+        contact.boundary.normal;
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::add_nodal_velocity(
+    const LevelSetField<dim> &alpha,
+    VelocityField<dim>       &velocity) const
+  {
+    TimerOutput::Scope        scope(timer, "grain-boundary diffusion");
+    const PowerCells<dim>     cells   = grains();
+    const auto               &normals = surface_diffusion.geometry().nodal_normals();
+    std::vector<unsigned int> near;
+    unsigned int              near_cell = numbers::invalid_unsigned_int;
+    velocity.add_vertex_values(alpha.dof_handler(),
+                               [&](const auto &cell, const unsigned int v) {
+      if (cell->active_cell_index() != near_cell)
+        {
+          cells.candidates(cell->center(), cell->diameter() / 2, near);
+          near_cell = cell->active_cell_index();
+        }
+      // A node on a grain boundary (equal powers: mesh lines often lie on
+      // the plane of equal grains) moves with the mean of its grains, so
+      // that a symmetric pair stays symmetric.
+      const Point<dim>   x      = cell->vertex(v);
+      const unsigned int owner  = cells.owner(x, near);
+      const double       tie    = cells.power(x, owner) +
+                         1e-9 * std::pow(cells.radius(owner), 2);
+      Tensor<1, dim>     value;
+      unsigned int       n_ties = 0;
+      for (const unsigned int k : near)
+        if (cells.power(x, k) <= tie)
+          {
+            value += trial_velocity[k];
+            ++n_ties;
+          }
+      value /= n_ties;
+      const auto i = cell->vertex_dof_index(v, 0);
+      for (unsigned int k = 0; k < last_contacts.size(); ++k)
+        if (const double w =
+              grain_geometry::triple_line_weight(last_contacts[k].boundary,
+                                                 x,
+                                                 deposition_width);
+            w > 0)
+          for (unsigned int c = 0; c < dim; ++c)
+            value[c] += deposition_speed[k] * w * normals[c](i);
+      return value;
+    });
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::add_velocity(const LevelSetField<dim> &alpha,
+                                            const double,
+                                            const double        dt,
+                                            VelocityField<dim> &velocity)
+  {
+    compute(alpha);
+    trial_dt = dt;
+    add_nodal_velocity(alpha, velocity);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::add_probe_velocity(
+    const LevelSetField<dim> &alpha,
+    const double,
+    VelocityField<dim> &velocity)
+  {
+    compute(alpha);
+    add_nodal_velocity(alpha, velocity);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::accept_step(const LevelSetField<dim> &)
+  {
+    for (unsigned int i = 0; i < centre.size(); ++i)
+      centre[i] += trial_dt * trial_velocity[i];
+  }
+
+  template <int dim>
+  double
+  GrainBoundaryDiffusion<dim>::time_step_limit(const LevelSetField<dim> &) const
+  {
+    return max_speed > 0 ? 0.5 * h_min / max_speed :
+                           std::numeric_limits<double>::infinity();
+  }
+
+  template <int dim>
+  std::string
+  GrainBoundaryDiffusion<dim>::save() const
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << centre.size() << ' ' << max_speed << ' '
+        << h_min;
+    for (const auto &c : centre)
+      for (unsigned int d = 0; d < dim; ++d)
+        out << ' ' << c[d];
+    return out.str();
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::load(const std::string &state)
+  {
+    std::istringstream in(state);
+    std::size_t        n = 0;
+    in >> n >> max_speed >> h_min;
+    if (n != centre.size())
+      throw std::runtime_error(
+        "the checkpoint holds " + std::to_string(n) + " grains, the scene " +
+        std::to_string(centre.size()) +
+        ": resume with the scene the checkpoint was written with");
+    for (auto &c : centre)
+      for (unsigned int d = 0; d < dim; ++d)
+        in >> c[d];
+    if (!in)
+      throw std::runtime_error("the grains' state in the checkpoint is "
+                               "incomplete");
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::add_output_fields(
+    const LevelSetField<dim> &alpha,
+    DataOut<dim>             &data_out) const
+  {
+    grain_geometry::cell_grains(alpha,
+                                grains(),
+                                grain_id,
+                                &boundary_indicator);
+    // Cell data: one value per active cell of the mesh data_out is on.
+    data_out.add_data_vector(grain_id,
+                             "grain_boundary_diffusion_grain_id",
+                             DataOut<dim>::type_cell_data);
+    data_out.add_data_vector(boundary_indicator,
+                             "grain_boundary_diffusion_boundary",
+                             DataOut<dim>::type_cell_data);
+  }
+
+  template class GrainBoundaryDiffusion<2>;
+  template class GrainBoundaryDiffusion<3>;
+} // namespace levelsinter

@@ -1,0 +1,82 @@
+#include <levelsinter/scene/grain_boundary_parameters.h>
+#include <levelsinter/scene/parameter_entries.h>
+
+#include <cmath>
+
+namespace levelsinter
+{
+  void
+  GrainBoundaryParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Grain boundaries");
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Each particle of Geometry/Particles is a grain: "
+                        "the solid is split among the grains by the power "
+                        "cells of their moving centres, and grain-boundary "
+                        "diffusion (paper Eq. 26, 30) between rigid grains "
+                        "makes them approach (densification). Needs "
+                        "Surface diffusion/Enabled = true.");
+      prm.declare_entry("Energy ratio",
+                        "0",
+                        Patterns::Double(0),
+                        "gamma_gb / gamma_s, from 0 (no grain-boundary "
+                        "energy) to below 2; sets the dihedral angle psi, "
+                        "cos(psi/2) = gamma_gb / (2 gamma_s), of the "
+                        "triple line's force balance.");
+      prm.declare_entry("Coefficient",
+                        "0",
+                        Patterns::Double(0),
+                        "C_gb = delta_gb D_gb gamma_s Omega / kT in m^4/s "
+                        "(in a scene without material data: length unit of "
+                        "the domain^4 per time unit, like Surface "
+                        "diffusion/Coefficient; C_gb / C_s = delta_gb D_gb "
+                        "/ (delta_s D_s)). delta_gb is the grain-boundary "
+                        "width, D_gb its diffusivity.");
+      prm.declare_entry("Sliding resistance",
+                        "1",
+                        Patterns::Double(0),
+                        "beta: the resistance of a grain boundary to "
+                        "tangential relative motion of its grains, as a "
+                        "multiple of its resistance to approach.");
+      prm.declare_entry("Deposition width",
+                        "2",
+                        Patterns::Double(0.5),
+                        "Half-width l, in finest cells, of the band about "
+                        "the triple line where the matter taken out of the "
+                        "grain boundary is deposited and the neck-root "
+                        "curvature is averaged.");
+    }
+    prm.leave_subsection();
+  }
+
+  void
+  GrainBoundaryParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Grain boundaries");
+    enabled            = prm.get_bool("Enabled");
+    energy_ratio       = prm.get_double("Energy ratio");
+    coefficient        = prm.get_double("Coefficient");
+    sliding_resistance = prm.get_double("Sliding resistance");
+    deposition_width   = prm.get_double("Deposition width");
+    prm.leave_subsection();
+    if (!enabled)
+      return;
+    if (!(energy_ratio < 2))
+      fail_entry("Grain boundaries/Energy ratio",
+                 "gamma_gb / gamma_s must lie in [0, 2): at 2 and above "
+                 "the grains do not wet each other (no dihedral angle)");
+    if (!(coefficient > 0))
+      fail_entry("Grain boundaries/Coefficient",
+                 "C_gb = delta_gb D_gb gamma_s Omega / kT must be positive");
+  }
+
+  double
+  GrainBoundaryParameters::sin_half_dihedral_angle() const
+  {
+    const double c = energy_ratio / 2;
+    return std::sqrt(1 - c * c);
+  }
+} // namespace levelsinter
