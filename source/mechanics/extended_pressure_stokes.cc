@@ -380,19 +380,6 @@ namespace levelsinter
 
   template <int dim>
   void
-  ExtendedPressureStokes<dim>::advance_displacement(const double dt)
-  {
-    // u^n = u^{n-1} + dt v^n (Eq. 92) on the velocity block.
-    BlockVector owned(owned_partitioning, dofs.get_communicator());
-    BlockVector velocity(owned_partitioning, dofs.get_communicator());
-    owned    = old_displacement;
-    velocity = ghosted_solution;
-    owned.block(0).add(dt, velocity.block(0));
-    old_displacement = owned;
-  }
-
-  template <int dim>
-  void
   ExtendedPressureStokes<dim>::remove_rigid_motion(
     const LevelSetField<dim> &alpha)
   {

@@ -360,21 +360,6 @@ namespace levelsinter
 
   template <int dim>
   void
-  TwoPhaseStokes<dim>::advance_displacement(const double dt)
-  {
-    // u^n = u^{n-1} + dt v^n (Eq. 92) on the velocity block; the pressure
-    // block of the vector is unused.
-    // Both operands without ghosts: Trilinos adds vectors of one layout.
-    BlockVector owned(owned_partitioning, dofs.get_communicator());
-    BlockVector velocity(owned_partitioning, dofs.get_communicator());
-    owned    = old_displacement;
-    velocity = ghosted_solution;
-    owned.block(0).add(dt, velocity.block(0));
-    old_displacement = owned;
-  }
-
-  template <int dim>
-  void
   TwoPhaseStokes<dim>::remove_rigid_motion(const LevelSetField<dim> &alpha)
   {
     remove_free_rigid_motion(dofs, alpha, free_motions, ghosted_solution);

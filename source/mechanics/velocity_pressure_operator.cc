@@ -29,6 +29,24 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  VelocityPressureOperator<dim>::advance_displacement(const double dt)
+  {
+    // On the velocity block; the pressure block of the vector is unused.
+    // Both operands without ghosts: Trilinos adds vectors of one layout.
+    BlockVector          &displaced = displacement();
+    std::vector<IndexSet> owned;
+    for (unsigned int b = 0; b < displaced.n_blocks(); ++b)
+      owned.push_back(displaced.block(b).locally_owned_elements());
+    const MPI_Comm comm = dof_handler().get_communicator();
+    BlockVector    sum(owned, comm), velocity(owned, comm);
+    sum      = displaced;
+    velocity = solution();
+    sum.block(0).add(dt, velocity.block(0));
+    displaced = sum;
+  }
+
+  template <int dim>
   TrilinosWrappers::MPI::Vector
   VelocityPressureOperator<dim>::plain_solution() const
   {

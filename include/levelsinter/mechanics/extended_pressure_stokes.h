@@ -82,9 +82,6 @@ namespace levelsinter
     void
     remove_rigid_motion(const LevelSetField<dim> &alpha) override;
 
-    void
-    advance_displacement(const double dt) override;
-
     BlockVector &
     displacement() override
     {

@@ -143,14 +143,6 @@ namespace levelsinter
     remove_rigid_motion(const LevelSetField<dim> &alpha) override;
 
     /**
-     * Displacement of the elastic solid (ElasticSolidFluid):
-     * u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity.
-     * Call once per accepted step, after solve().
-     */
-    void
-    advance_displacement(const double dt) override;
-
-    /**
      * The displacement u^{n-1} that the next assembly reads (velocity
      * block; the pressure block is unused), ghosted. Writable so that a
      * mesh change can carry it over.

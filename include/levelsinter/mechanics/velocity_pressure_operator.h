@@ -64,9 +64,10 @@ namespace levelsinter
     virtual void
     remove_rigid_motion(const LevelSetField<dim> &alpha) = 0;
 
-    /** u^n = u^{n-1} + dt v^n (Eq. 92), once per accepted step. */
-    virtual void
-    advance_displacement(const double dt) = 0;
+    /** u^n = u^{n-1} + dt v^n (Eq. 92) with the last solution's velocity,
+     * once per accepted step, after solve(). */
+    void
+    advance_displacement(const double dt);
 
     /** u^{n-1} (velocity block, ghosted), writable for a mesh change. */
     virtual BlockVector &
