@@ -6,7 +6,6 @@
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/solver_gmres.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 
@@ -15,7 +14,6 @@
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
-#include <levelsinter/mechanics/block_schur_preconditioner.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
@@ -323,36 +321,24 @@ namespace levelsinter
         owned_solution.compress(VectorOperation::insert);
       }
     else
-      {
-        const BlockSchurPreconditioner preconditioner(
-          system_matrix, schur_matrix.block(1, 1), velocity_modes, dim);
-        SolverControl control(settings.max_iterations,
-                              settings.tolerance * system_rhs.l2_norm());
-        SolverFGMRES<BlockVector> solver(
-          control, SolverFGMRES<BlockVector>::AdditionalData(100));
-        constraints.set_zero(owned_solution);
-        try
-          {
-            if (system_rhs.l2_norm() > 0)
-              solver.solve(system_matrix,
-                           owned_solution,
-                           system_rhs,
-                           preconditioner);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            // A diagnosis instead of deal.II's stack trace.
-            std::ostringstream message;
-            message << "velocity-pressure solve: FGMRES did not reach the relative "
-                    << "residual " << settings.tolerance << " in "
-                    << e.last_step << " iterations (residual "
-                    << e.last_residual / system_rhs.l2_norm()
-                    << "); raise 'Viscous flow/Maximum solver iterations' "
-                    << "or use 'Linear solver = direct' for a small 2D scene";
-            throw std::runtime_error(message.str());
-          }
-        iterations = control.last_step();
-      }
+      try
+        {
+          iterations = solve_block_system(system_matrix,
+                                          schur_matrix.block(1, 1),
+                                          velocity_modes,
+                                          dim,
+                                          system_rhs,
+                                          owned_solution,
+                                          settings.tolerance,
+                                          settings.max_iterations);
+        }
+      catch (const std::runtime_error &e)
+        {
+          // The continuous form also has the direct solver to offer.
+          throw std::runtime_error(std::string(e.what()) +
+                                   " or use 'Linear solver = direct' for a "
+                                   "small 2D scene");
+        }
     constraints.distribute(owned_solution);
     ghosted_solution = owned_solution;
     return iterations;
