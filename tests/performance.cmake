@@ -101,15 +101,46 @@ packing_154_run(coupled packing_154_coupled_3d.prm "Time/Maximum steps=12")
 
 # The wall and CPU time of every scene in parameter_files/ on 1 and 2 ranks
 # as shipped (doc/user_guide.md, "Scenes"): short scenes to the end, long
-# ones projected from their first 20-90 s (scripts/measure_scenes.py).
-# The 154-particle packings and the 1.4 M-DoF transport benchmark are left
-# out (hours, 16 GB; doc/performance.md and doc/validation.md give their
-# cost). About 40 minutes.
+# ones projected from their first 20 s, or from their first steps with an
+# ETA where a step takes longer (the 3D packings: up to 10 min;
+# scripts/measure_scenes.py). The 154-particle packings and the 1.4 M-DoF
+# transport benchmark are left out (hours, 16 GB; doc/performance.md and
+# doc/validation.md give their cost). About 60 minutes on idle cores.
 add_test(NAME benchmark_scene_times
   COMMAND ${CMAKE_SOURCE_DIR}/scripts/measure_scenes.py
-    $<TARGET_FILE:levelsinter> --budget 20 --max-budget 90
+    $<TARGET_FILE:levelsinter> --budget 20 --max-budget 600
     --skip packing_154_surface_diffusion_3d.prm packing_154_coupled_3d.prm
     transport_benchmark_3d.prm
     --work ${CMAKE_CURRENT_BINARY_DIR}/scene_times
     --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/scene_times.csv)
 set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
+
+# --- What resolution and step the packing results need (issue 26;
+# doc/validation.md, "Packings: resolution and step"): 27 spheres made like
+# the 154 (packing_27_like_154_3d.csv: the paper's radii, nearly tangent,
+# levelsinter-pack seed 1 in a box of (27/154)^(1/3) x 1.2 rounded up to
+# 0.9 um) with the coupled 154 scene's settings, to t = 0.01 s: the CFL
+# number 0.5 (the scene's), 1 and 2 (its band widened from 4.8 to 5.1
+# cells, as the band must hold (Adapt interval x CFL + 1) cells), and the
+# mesh coarsened by 2 with the band and the filter (lengths in cells
+# kept). Each case keeps a checkpoint
+# every 5 steps and is resumed where it stopped; metrics at every step, so
+# that the comparison at fixed times interpolates between close rows.
+# About 1 h on 2 cores.
+add_test(NAME packing_convergence_27 COMMAND
+  ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
+  $<TARGET_FILE:levelsinter>
+  ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_coupled_3d.prm
+  --work ${CMAKE_CURRENT_BINARY_DIR}/packing_convergence_27
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_convergence_27.csv
+  --end-time 0.01 --times 0.0025,0.005,0.01
+  --set "Domain/Upper corner=0.9,0.9,0.9"
+  --set "Domain/Subdivisions=3,3,3" --set "Output/Metrics interval=1"
+  --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/packing_27_like_154_3d.csv"
+  --case "h2:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.09;Level set/Filter thickness=0.112"
+  --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
+  --case "cfl1:Time/CFL number=1"
+  --case "reference"
+  --reference reference)
+set_tests_properties(packing_convergence_27 PROPERTIES
+  LABELS validation-long TIMEOUT 10800)
