@@ -35,7 +35,7 @@ SCRIPT = re.compile(r"scripts/[A-Za-z0-9_]+\.py")
 LEVEL_SERIES = re.compile(r"\.level\d+\.csv$")
 # Names in the text that are not files of doc/validation_data/: the
 # application's output and the placeholders of command lines.
-NOT_DATA = {"metrics.csv", "OUT.png", "FILE.csv", "FILE.levelN.csv",
+NOT_DATA = {"metrics.csv", "timing.csv", "OUT.png", "FILE.csv", "FILE.levelN.csv",
             "A.csv", "B.csv"}
 
 
