@@ -15,7 +15,8 @@ namespace levelsinter
     const TrilinosWrappers::BlockSparseMatrix &system_matrix,
     const TrilinosWrappers::SparseMatrix      &schur_approximation,
     const std::vector<std::vector<double>>    &velocity_near_null_space,
-    const unsigned int                         dim)
+    const unsigned int                         dim,
+    const bool                                 smoothed_aggregation)
     : system_matrix(system_matrix)
     , schur_approximation(schur_approximation)
   {
@@ -42,6 +43,13 @@ namespace levelsinter
       Teuchos::ParameterList              parameters;
       std::unique_ptr<Epetra_MultiVector> no_constant_modes;
       data.set_parameters(parameters, no_constant_modes, matrix);
+      // Plain aggregation keeps the tentative prolongator (one nonzero
+      // per row and mode): its coarse operators are sparse and cheap to
+      // form, at about 2.3x the outer iterations. On the 27 spheres made
+      // like the 154 (1 rank): peak resident set 3.15 GB against 4.06 GB,
+      // elastic solve CPU 1.19x (doc/performance.md).
+      if (!smoothed_aggregation)
+        parameters.set("aggregation: damping factor", 0.);
       // With a viscosity contrast the count jumps by 7 where ML's first
       // coarse level outgrows its direct solve (2000 rows, from R/h = 80
       // in 2D). In 2D that level (1/8 of the velocity rows) is solved

@@ -372,7 +372,8 @@ namespace levelsinter
                          system_rhs,
                          owned_solution,
                          settings.tolerance,
-                         settings.max_iterations);
+                         settings.max_iterations,
+                         settings.smoothed_aggregation);
     constraints.distribute(owned_solution);
     ghosted_solution = owned_solution;
     return iterations;

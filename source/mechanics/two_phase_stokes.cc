@@ -63,6 +63,7 @@ namespace levelsinter
       parameters.linear_solver == ViscousFlowParameters::LinearSolver::direct;
     settings.tolerance                  = parameters.solver_tolerance;
     settings.max_iterations             = parameters.max_iterations;
+    settings.smoothed_aggregation       = parameters.smoothed_aggregation;
     return settings;
   }
 
@@ -330,7 +331,8 @@ namespace levelsinter
                                           system_rhs,
                                           owned_solution,
                                           settings.tolerance,
-                                          settings.max_iterations);
+                                          settings.max_iterations,
+                                          settings.smoothed_aggregation);
         }
       catch (const std::runtime_error &e)
         {

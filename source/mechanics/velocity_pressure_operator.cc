@@ -83,13 +83,15 @@ namespace levelsinter
                      const TrilinosWrappers::MPI::BlockVector  &rhs,
                      TrilinosWrappers::MPI::BlockVector        &solution,
                      const double                               tolerance,
-                     const unsigned int max_iterations)
+                     const unsigned int max_iterations,
+                     const bool         smoothed_aggregation)
   {
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
     const BlockSchurPreconditioner preconditioner(matrix,
                                                   schur,
                                                   velocity_modes,
-                                                  dim);
+                                                  dim,
+                                                  smoothed_aggregation);
     SolverControl control(max_iterations, tolerance * rhs.l2_norm());
     SolverFGMRES<BlockVector> solver(
       control, SolverFGMRES<BlockVector>::AdditionalData(100));

@@ -32,13 +32,15 @@ namespace levelsinter
      * Set up the AMG hierarchy of A with @p velocity_near_null_space (the
      * rigid-body modes, one vector per mode over the locally owned rows of
      * A), and the Jacobi preconditioner of @p schur_approximation. @p dim
-     * sets how large a coarse level of A is still solved directly.
+     * sets how large a coarse level of A is still solved directly;
+     * @p smoothed_aggregation chooses smoothed or plain aggregation.
      */
     BlockSchurPreconditioner(
       const TrilinosWrappers::BlockSparseMatrix &system_matrix,
       const TrilinosWrappers::SparseMatrix      &schur_approximation,
       const std::vector<std::vector<double>>    &velocity_near_null_space,
-      const unsigned int                         dim);
+      const unsigned int                         dim,
+      const bool                                 smoothed_aggregation);
 
     void
     vmult(TrilinosWrappers::MPI::BlockVector       &dst,

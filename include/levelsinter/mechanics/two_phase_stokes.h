@@ -93,6 +93,8 @@ namespace levelsinter
       bool                            direct_solver = false;
       double                          tolerance     = 1e-10; // relative
       unsigned int                    max_iterations = 500;
+      /** Smoothed (or plain) aggregation in the velocity AMG. */
+      bool                            smoothed_aggregation = true;
 
       /** The settings a scene's `Viscous flow` entries give, with the
        * symmetry planes of its domain and the interface band at

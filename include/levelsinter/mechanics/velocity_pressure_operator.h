@@ -109,7 +109,8 @@ namespace levelsinter
    * FGMRES with BlockSchurPreconditioner (AMG on the velocity block with
    * @p velocity_modes as near-null space, CG/Jacobi on the Schur
    * approximation @p schur) on the block system, to the relative residual
-   * @p tolerance, from @p solution (owned, without ghosts); returns the
+   * @p tolerance, from @p solution (owned, without ghosts), with smoothed
+   * or plain aggregation in the AMG (@p smoothed_aggregation); returns the
    * iterations. A failure throws with the entries that help.
    */
   unsigned int
@@ -120,5 +121,6 @@ namespace levelsinter
                      const TrilinosWrappers::MPI::BlockVector  &rhs,
                      TrilinosWrappers::MPI::BlockVector        &solution,
                      const double                               tolerance,
-                     const unsigned int max_iterations);
+                     const unsigned int max_iterations,
+                     const bool         smoothed_aggregation);
 } // namespace levelsinter

@@ -50,6 +50,7 @@ namespace levelsinter
     LinearSolver linear_solver              = LinearSolver::iterative;
     double       solver_tolerance           = 1e-10;
     unsigned int max_iterations             = 500;
+    bool         smoothed_aggregation       = true;
     double       capillary_time_step_factor = 1;
     PressureSpace pressure_space            = PressureSpace::continuous;
     double        ghost_penalty             = 0.1;
