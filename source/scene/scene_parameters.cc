@@ -283,16 +283,6 @@ namespace levelsinter
                      "R^4 or C_v gamma t / R^3; set one of the two to "
                      "seconds (its coefficient is then converted to the "
                      "other's t*)");
-        // lambda = 0 reads grad p at the interface: only the extended
-        // pressure is the solid's own up to there.
-        if (volume_diffusion.interior_offset == 0 &&
-            viscous_flow.pressure_space !=
-              ViscousFlowParameters::PressureSpace::extended)
-          fail_entry("Volume diffusion/Interior offset",
-                     "can be 0 only with 'Viscous flow/Pressure space = "
-                     "extended': the continuous pressure is smeared across "
-                     "the interface, so its gradient must be read deeper "
-                     "in the solid");
       }
 
     if (viscous_flow.enabled)

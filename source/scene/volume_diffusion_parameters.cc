@@ -70,11 +70,7 @@ namespace levelsinter
                         "(doc/numerics.md). 6: on a circle, where xi is 0, "
                         "the elastic pressure leaves a spurious C_v |xi| of "
                         "0.011 um/s at 6 cells against 0.60 at 3 (h = 1/128, "
-                        "measured); 3 suffices for a smeared jump alone. "
-                        "0 (only with 'Viscous flow/Pressure space = "
-                        "extended'): read at every node inside the solid, "
-                        "from the solid's own pressure, which does not "
-                        "jump there.");
+                        "measured); 3 suffices for a smeared jump alone.");
       prm.declare_entry("Extrapolation",
                         "linear",
                         Patterns::Selection("linear|constant"),
@@ -140,8 +136,8 @@ namespace levelsinter
            "C_v = (1 - f) Omega D_v / kT must be positive");
     if (time_unit == TimeUnit::reduced && reference_radius == 0)
       fail("Reference radius", "must be positive when Time unit = reduced");
-    if (interior_offset < 0)
-      fail("Interior offset", "must be 0 or positive");
+    if (interior_offset <= 0)
+      fail("Interior offset", "must be positive");
     if (time_step_factor > 1)
       fail("Time step factor",
            "must be at most 1 (1 is the measured stability limit itself)");

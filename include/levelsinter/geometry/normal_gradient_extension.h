@@ -61,9 +61,7 @@ namespace levelsinter
     {
       // lambda in cell sizes: a node is a source if d < -((lambda - 1)
       // h_min + h_K) for every cell K at it. 6: `Volume diffusion/Interior
-      // offset`'s default; the xi tests set their own (3). 0: every node
-      // inside the solid (d < 0 on the finest cells), for a pressure that
-      // does not jump there (the extended pressure's solid component).
+      // offset`'s default; the xi tests set their own (3).
       double       interior_offset = 6;
       // Carry g - d eta and eta = d g / dn along N and add them up as
       // xi = (g - d eta) + d eta at each node (linear extrapolation, second
