@@ -8,9 +8,12 @@
 // decays as exp(-n^2 (n^2 - 1) t*) in 2D and as exp(-(n-1) n (n+1) (n+2) t*)
 // in 3D (Mullins 1957); with volume diffusion on (2D, elastic) as
 // exp(-(2/3)(1 + nu) n (n^2 - 1) t*), t* = C_v gamma t / R^3; with viscous
-// flow on (2D, an atmosphere of negligible viscosity) as
-// exp(-n gamma t / (2 eta_s R)) in the scene's time (doc/numerics.md,
-// "Sharp interfaces"; iterations and solve CPU are then Stokes'). Every
+// flow on (an atmosphere of negligible viscosity) as
+// exp(-n gamma t / (2 eta_s R)) for a cylinder and as
+// exp(-l (l + 2) (2 l + 1) gamma t / (2 (2 l^2 + 4 l + 3) eta_s R)) for a
+// sphere (3D or axisymmetric) in the scene's time (doc/numerics.md and
+// doc/validation.md, "Sharp interfaces"; iterations and solve CPU are then
+// Stokes'). Every
 // combination of LEVELS (maximum refinement level) and STEPS (steps per
 // e-folding time) is run to one e-folding time; the amplitude is measured
 // after every step from the discrete interface and the rate fitted by
@@ -157,17 +160,23 @@ namespace
                  K = base.phase_law.bulk_modulus;
     const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
     const bool viscous = base.viscous_flow.enabled;
+    const bool planar_scene = dim == 2 && !base.geometry.axisymmetric;
     const double radius = base.geometry.particles[0][dim];
-    if (viscous && (dim != 2 || base.geometry.axisymmetric))
-      throw std::runtime_error(
-        "mullins: the viscous rate is known here for a 2D cylinder only");
+    // Viscous flow: s_n = n gamma / (2 eta R) for a cylinder and
+    // l (l + 2) (2 l + 1) gamma / (2 (2 l^2 + 4 l + 3) eta R) for a sphere
+    // (3D or a body of revolution; doc/validation.md, "Sharp interfaces:
+    // shape modes", scripts/viscous_shape_mode_rates.py).
+    const double n             = mode;
+    const double viscous_scale = base.materials.surface_tension /
+                                 (base.viscous_flow.solid_viscosity * radius);
     const double exact_rate =
-      viscous ? mode * base.materials.surface_tension /
-                  (2 * base.viscous_flow.solid_viscosity * radius) :
+      viscous ? (planar_scene ?
+                   n / 2 * viscous_scale :
+                   n * (n + 2) * (2 * n + 1) / (2 * (2 * n * n + 4 * n + 3)) *
+                     viscous_scale) :
       base.volume_diffusion.enabled ?
         2. / 3 * (1 + nu) * mode * (mode * mode - 1.) :
-      dim == 2 && !base.geometry.axisymmetric ?
-        double(mode * mode) * (mode * mode - 1.) :
+      planar_scene ? double(mode * mode) * (mode * mode - 1.) :
         double(mode - 1) * mode * (mode + 1) * (mode + 2);
     const double end_time = time_fraction / exact_rate;
     Point<dim>   centre;

@@ -11,7 +11,8 @@
 //
 // LEVELS: comma-separated maximum refinement levels (uniform meshes for the
 // bubble); FORMS: comma-separated surface-tension forms (csf, sharp,
-// csf-curvature, csf-curvature-exact).
+// csf-curvature, sharp-curvature, and either curvature form with -exact:
+// the curvature prescribed, 1/R or 2/R).
 // Options: --csv FILE, --set ENTRY=VALUE and limits (--max-pressure-error,
 // --max-core-error, --max-C, --max-curvature-error,
 // --max-outer-pressure-error (bubble: |p_out - p_ext| / p_exact, p_ext the
@@ -246,8 +247,9 @@ namespace
 
   // Static bubble: one Stokes solve on a uniform mesh; p_in = gamma / R,
   // or 2 gamma / R for the sphere of an axisymmetric scene.
-  // FORMS are the scene's surface-tension forms plus csf-curvature-exact,
-  // the csf-curvature form with the curvature prescribed (1/R, 2/R).
+  // FORMS are the scene's surface-tension forms plus csf-curvature-exact
+  // and sharp-curvature-exact, those forms with the curvature prescribed
+  // (1/R, 2/R).
   void
   bubble(const std::string              &scene_file,
          const std::vector<unsigned int> &levels,
@@ -258,7 +260,9 @@ namespace
     const std::vector<std::string> form_ids = {"csf",
                                                "sharp",
                                                "csf-curvature",
-                                               "csf-curvature-exact"};
+                                               "csf-curvature-exact",
+                                               "sharp-curvature",
+                                               "sharp-curvature-exact"};
     Table table({"level", "h", "form", "dofs", "iterations", "cpu_time",
                  "p_in", "p_out", "pressure_error", "core_error", "C",
                  "kappa_rms_error", "kappa_max_error"},
@@ -272,7 +276,16 @@ namespace
                           form_ids.begin();
           if (id == int(form_ids.size()))
             throw std::runtime_error("unknown surface-tension form " + form);
-          const bool exact_curvature = form == "csf-curvature-exact";
+          const std::string exact_suffix    = "-exact";
+          const bool        exact_curvature =
+            form.size() > exact_suffix.size() &&
+            form.compare(form.size() - exact_suffix.size(),
+                         exact_suffix.size(),
+                         exact_suffix) == 0;
+          const std::string scene_form =
+            exact_curvature ?
+              form.substr(0, form.size() - exact_suffix.size()) :
+              form;
           const auto base = read_scene(scene_file, options.overrides);
           const double h = study::cell_size(base, level);
           const double band =
@@ -287,8 +300,7 @@ namespace
              {"Level set/Filter thickness", std::to_string(band)},
              {"Mesh refinement/Band width", std::to_string(band)},
              {"Time/CFL number", "0.1"},
-             {"Viscous flow/Surface tension form",
-              exact_curvature ? "csf-curvature" : form},
+             {"Viscous flow/Surface tension form", scene_form},
              {"Output/Directory", output_directory("bubble")},
              {"Output/Field formats", "none"}});
           const auto      scene = read_scene(scene_file, overrides);
@@ -352,11 +364,12 @@ namespace
     if (root)
       std::cout << "(form: 0 = csf, 1 = sharp, 2 = csf-curvature, 3 = "
                    "csf-curvature with the exact kappa, 1/R (2/R "
-                   "axisymmetric); pressure_error = |p_in - "
+                   "axisymmetric), 4 = sharp-curvature, 5 = sharp-curvature "
+                   "with the exact kappa; pressure_error = |p_in - "
                    "p_out - p_exact| / p_exact, p_exact = gamma/R (2 gamma/R "
                    "axisymmetric); core_error: the same with "
                    "the means over r < R/2 and r > 3R/2; kappa errors "
-                   "relative, on alpha_h = 0, csf-curvature only)\n";
+                   "relative, on alpha_h = 0, curvature forms only)\n";
     check("finest relative mean-pressure error (worst form)", worst_error,
           options, "max-pressure-error");
     check("finest C = v_max eta / gamma (worst form)", worst_C, options,

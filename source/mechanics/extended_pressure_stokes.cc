@@ -14,6 +14,7 @@
 #include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
+#include <levelsinter/mechanics/stokes_terms.h>
 
 #include <algorithm>
 #include <stdexcept>
@@ -50,10 +51,12 @@ namespace levelsinter
   {
     // ViscousFlowParameters refuses these combinations with the entry
     // named; the volume-diffusion mechanics sets the sharp form itself.
-    if (settings.form != TwoPhaseStokes<dim>::SurfaceTensionForm::sharp ||
+    using Form = typename TwoPhaseStokes<dim>::SurfaceTensionForm;
+    if ((settings.form != Form::sharp &&
+         settings.form != Form::sharp_curvature) ||
         settings.direct_solver)
       throw std::logic_error(
-        "the extended pressure needs the sharp surface-tension form and the "
+        "the extended pressure needs a sharp surface-tension form and the "
         "iterative solver");
   }
 
@@ -191,10 +194,10 @@ namespace levelsinter
   template <int dim>
   void
   ExtendedPressureStokes<dim>::assemble(
-    const LevelSetField<dim> &alpha,
+    const LevelSetField<dim>            &alpha,
+    const TrilinosWrappers::MPI::Vector &curvature,
     const TrilinosWrappers::MPI::Vector &,
-    const TrilinosWrappers::MPI::Vector &,
-    const double surface_time_step)
+    const double                         surface_time_step)
   {
     system_matrix = 0;
     system_rhs    = 0;
@@ -207,31 +210,18 @@ namespace levelsinter
 
     // The terms: the bulk and ASGS terms per phase, the surface terms once
     // per cell, the traction on the free box faces.
-    const double gamma       = settings.surface_tension;
-    const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
-    std::vector<std::unique_ptr<StokesAssembler<dim>>> phase_assemblers;
-    phase_assemblers.push_back(std::make_unique<BulkAssembler<dim>>());
-    phase_assemblers.push_back(std::make_unique<StabilisationAssembler<dim>>());
-    std::vector<std::unique_ptr<StokesAssembler<dim>>> surface_assemblers;
-    if (gamma != 0)
-      surface_assemblers.push_back(
-        std::make_unique<TensorialSurfaceTensionAssembler<dim>>(gamma));
-    if (implicit_dt > 0)
-      surface_assemblers.push_back(
-        std::make_unique<LaplaceBeltramiAssembler<dim>>(gamma, implicit_dt));
-    std::vector<std::unique_ptr<StokesFaceAssembler<dim>>> face_assemblers;
-    if (settings.external_pressure != 0)
-      face_assemblers.push_back(
-        std::make_unique<TractionAssembler<dim>>(settings.external_pressure));
-
+    const StokesTerms<dim> terms(settings, surface_time_step);
+    if (terms.needs_curvature() &&
+        curvature.size() != alpha.dof_handler().n_dofs())
+      throw std::runtime_error("viscous flow: the sharp-curvature surface-"
+                               "tension form needs a curvature on the "
+                               "level-set DoFs");
     using CellData = StokesCellData<dim>;
     typename CellData::Inputs inputs{alpha, phase_law, old_displacement};
-    inputs.surface_tension        = gamma;
-    inputs.surface                = CellData::SurfaceMeasure::sharp;
-    inputs.stabilisation_constant = settings.stabilisation_constant;
-    inputs.free_faces             = !face_assemblers.empty();
-    inputs.symmetry_boundaries    = settings.symmetry_boundaries;
-    inputs.extended_pressure      = true;
+    if (terms.needs_curvature())
+      inputs.curvature = &curvature;
+    terms.set_inputs(inputs);
+    inputs.extended_pressure = true;
 
     CellData         data(finite_element, inputs);
     CellContribution contribution(finite_element.dofs_per_cell);
@@ -242,13 +232,8 @@ namespace levelsinter
           data.reinit_cut(cell);
           for (const Phase phase : phases)
             if (data.select_phase(phase))
-              for (const auto &assembler : phase_assemblers)
-                assembler->assemble(data, contribution);
-          for (const auto &assembler : surface_assemblers)
-            assembler->assemble(data, contribution);
-          for (const auto &face : data.free_faces)
-            for (const auto &assembler : face_assemblers)
-              assembler->assemble(data, face, contribution);
+              terms.assemble_bulk(data, contribution);
+          terms.assemble_surface(data, contribution);
           symmetrise(data, contribution);
           cell->get_dof_indices(contribution.dof_indices);
           constraints.distribute_local_to_global(contribution.matrix,

@@ -123,6 +123,18 @@ namespace levelsinter
 
   template <int dim>
   void
+  CurvatureSurfaceTensionAssembler<dim>::assemble(
+    const StokesCellData<dim> &data,
+    CellContribution          &cell) const
+  {
+    for (const auto &point : data.surface)
+      for (unsigned int i = 0; i < data.n_dofs; ++i)
+        if (!data.is_pressure(i))
+          cell.rhs(i) -= gamma * point.curvature * point.normal_w[i] * point.dS;
+  }
+
+  template <int dim>
+  void
   BalancedForceAssembler<dim>::assemble(const StokesCellData<dim> &data,
                                         CellContribution          &cell) const
   {
@@ -224,6 +236,7 @@ namespace levelsinter
   template class BulkAssembler<dim>;                                \
   template class StabilisationAssembler<dim>;                       \
   template class TensorialSurfaceTensionAssembler<dim>;             \
+  template class CurvatureSurfaceTensionAssembler<dim>;             \
   template class BalancedForceAssembler<dim>;                       \
   template class LaplaceBeltramiAssembler<dim>;                     \
   template class TractionAssembler<dim>;                            \

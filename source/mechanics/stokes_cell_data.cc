@@ -60,6 +60,7 @@ namespace levelsinter
     , uncut_quadrature(QGauss<dim>(2))
     , cut_quadrature(QGauss<1>(3))
     , vertex_alpha(inputs.alpha.fe().dofs_per_cell)
+    , vertex_kappa(inputs.alpha.fe().dofs_per_cell)
   {
     for (unsigned int i = 0; i < n_dofs; ++i)
       (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
@@ -271,7 +272,12 @@ namespace levelsinter
   {
     cut_values->reinit(cell);
     if (const auto &cut = cut_values->get_surface_fe_values())
-      add_surface_points(*cut);
+      {
+        if (inputs.curvature)
+          same_cell(cell, inputs.alpha.dof_handler())
+            ->get_dof_values(*inputs.curvature, vertex_kappa);
+        add_surface_points(*cut);
+      }
   }
 
   template <int dim>
@@ -287,11 +293,22 @@ namespace levelsinter
           measure.inverse_radius(cut.quadrature_point(k));
         point.grad_w.resize(n_dofs);
         point.hoop.resize(n_dofs);
+        point.normal_w.resize(n_dofs);
         for (unsigned int i = 0; i < n_dofs; ++i)
           {
-            point.grad_w[i] = cut[velocity].gradient(i, k);
-            point.hoop[i]   = cut[velocity].value(i, k)[0] * inverse_radius;
+            const Tensor<1, dim> w = cut[velocity].value(i, k);
+            point.grad_w[i]        = cut[velocity].gradient(i, k);
+            point.hoop[i]          = w[0] * inverse_radius;
+            point.normal_w[i]      = w * point.normal;
           }
+        // kappa_h is Q1 on the level set's element, the velocity's base
+        // element: its shape functions are the first component's.
+        if (inputs.curvature)
+          for (unsigned int j = 0; j < vertex_kappa.size(); ++j)
+            point.curvature +=
+              vertex_kappa[j] *
+              cut.shape_value_component(
+                fe_collection[0].component_to_system_index(0, j), k, 0);
         surface.push_back(std::move(point));
       }
   }

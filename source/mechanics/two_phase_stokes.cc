@@ -16,7 +16,7 @@
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
-#include <levelsinter/mechanics/stokes_assemblers.h>
+#include <levelsinter/mechanics/stokes_terms.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
 
 #include <algorithm>
@@ -53,6 +53,8 @@ namespace levelsinter
                       SurfaceTensionForm::csf :
                     parameters.surface_tension_form == Choice::sharp ?
                       SurfaceTensionForm::sharp :
+                    parameters.surface_tension_form == Choice::sharp_curvature ?
+                      SurfaceTensionForm::sharp_curvature :
                       SurfaceTensionForm::csf_curvature;
     settings.interface_half_width_cells = parameters.interface_half_width;
     settings.band_level                 = band_level;
@@ -185,59 +187,31 @@ namespace levelsinter
     if (!settings.direct_solver)
       schur_matrix = 0;
 
-    const double gamma = settings.surface_tension;
-    const bool   curvature_form =
-      settings.form == SurfaceTensionForm::csf_curvature && gamma != 0;
-    const double implicit_dt = gamma != 0 ? surface_time_step : 0.;
-    if (curvature_form &&
-        (curvature.size() != alpha.dof_handler().n_dofs() ||
-         interface_level_set.size() != alpha.dof_handler().n_dofs()))
-      throw std::runtime_error(
-        "viscous flow: the csf-curvature surface-tension form needs a "
-        "curvature and an interface level set on the level-set DoFs");
-
     // The terms of the operator, chosen once for this assembly.
-    std::vector<std::unique_ptr<StokesAssembler<dim>>> assemblers;
-    assemblers.push_back(std::make_unique<BulkAssembler<dim>>());
-    assemblers.push_back(std::make_unique<StabilisationAssembler<dim>>());
-    if (curvature_form)
-      assemblers.push_back(std::make_unique<BalancedForceAssembler<dim>>());
-    else if (gamma != 0)
-      assemblers.push_back(
-        std::make_unique<TensorialSurfaceTensionAssembler<dim>>(gamma));
-    if (implicit_dt > 0)
-      assemblers.push_back(
-        std::make_unique<LaplaceBeltramiAssembler<dim>>(gamma, implicit_dt));
-    std::vector<std::unique_ptr<StokesFaceAssembler<dim>>> face_assemblers;
-    if (settings.external_pressure != 0)
-      face_assemblers.push_back(
-        std::make_unique<TractionAssembler<dim>>(settings.external_pressure));
+    const StokesTerms<dim> terms(settings, surface_time_step);
+    if (terms.needs_curvature() &&
+        (curvature.size() != alpha.dof_handler().n_dofs() ||
+         (terms.balanced_force() &&
+          interface_level_set.size() != alpha.dof_handler().n_dofs())))
+      throw std::runtime_error(
+        "viscous flow: the csf-curvature and sharp-curvature surface-tension "
+        "forms need a curvature (csf-curvature also an interface level set) "
+        "on the level-set DoFs");
 
     // What the cell data gathers for them.
     using CellData = StokesCellData<dim>;
     const TrilinosWrappers::MPI::Vector solid_fraction =
-      curvature_form ?
+      terms.balanced_force() ?
         nodal_solid_fraction(alpha,
                              interface_level_set,
                              settings.interface_half_width_cells) :
         TrilinosWrappers::MPI::Vector();
     typename CellData::Inputs inputs{alpha, phase_law, old_displacement};
-    if (curvature_form)
-      {
-        inputs.curvature      = &curvature;
-        inputs.solid_fraction = &solid_fraction;
-      }
-    inputs.surface_tension = gamma;
-    // The tensorial load and the Laplace-Beltrami term need the surface.
-    if ((gamma != 0 && !curvature_form) || implicit_dt > 0)
-      inputs.surface = settings.form == SurfaceTensionForm::sharp ?
-                         CellData::SurfaceMeasure::sharp :
-                         CellData::SurfaceMeasure::smeared;
-    inputs.interface_half_width_cells = settings.interface_half_width_cells;
-    inputs.band_level                 = settings.band_level;
-    inputs.stabilisation_constant     = settings.stabilisation_constant;
-    inputs.free_faces                 = !face_assemblers.empty();
-    inputs.symmetry_boundaries        = settings.symmetry_boundaries;
+    if (terms.needs_curvature())
+      inputs.curvature = &curvature;
+    if (terms.balanced_force())
+      inputs.solid_fraction = &solid_fraction;
+    terms.set_inputs(inputs);
 
     // step-32's split: the worker fills a cell's contribution from the
     // cell data, the copier adds it to the global system.
@@ -246,11 +220,8 @@ namespace levelsinter
                             CellContribution &contribution) {
       data.reinit(cell);
       contribution.reset();
-      for (const auto &assembler : assemblers)
-        assembler->assemble(data, contribution);
-      for (const auto &face : data.free_faces)
-        for (const auto &assembler : face_assemblers)
-          assembler->assemble(data, face, contribution);
+      terms.assemble_bulk(data, contribution);
+      terms.assemble_surface(data, contribution);
       symmetrise(data, contribution);
       cell->get_dof_indices(contribution.dof_indices);
     };

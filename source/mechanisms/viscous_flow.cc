@@ -66,7 +66,8 @@ namespace levelsinter
     if (viscoelastic)
       viscoelastic->setup(alpha);
 
-    if (settings.form == Form::csf_curvature)
+    if (settings.form == Form::csf_curvature ||
+        settings.form == Form::sharp_curvature)
       {
         kappa.reinit(alpha.locally_owned(),
                      alpha.locally_relevant(),

@@ -25,14 +25,20 @@ namespace levelsinter
                         "the atmosphere are in the Materials section.");
       prm.declare_entry("Surface tension form",
                         "sharp",
-                        Patterns::Selection("csf|sharp|csf-curvature"),
+                        Patterns::Selection(
+                          "csf|sharp|csf-curvature|sharp-curvature"),
                         "Tensorial form gamma (I - n n) : grad w (Eq. 108), "
                         "integrated with the regularised Dirac (csf, Eq. "
                         "100-104) or on the zero level set with cut-cell "
                         "quadrature (sharp); or csf-curvature: the force "
                         "gamma kappa grad H_h (Eq. 100 in balanced-force "
                         "form, H_h the Q1 smoothed solid fraction) with the "
-                        "curvature projected from the level set.");
+                        "curvature projected from the level set; or "
+                        "sharp-curvature: the load gamma kappa n on the zero "
+                        "level set (cut-cell quadrature) with that "
+                        "curvature, balanced with 'Pressure space = "
+                        "extended' (a constant kappa is met by a constant "
+                        "pressure in the solid).");
       prm.declare_entry("Surface tension time integration",
                         "explicit",
                         Patterns::Selection("explicit|semi-implicit"),
@@ -103,7 +109,8 @@ namespace levelsinter
                         "side of alpha_h = 0 with cut-cell quadrature, the "
                         "viscosities sharp, so the pressure jumps at the "
                         "interface (doc/numerics.md, 'Sharp interfaces'). "
-                        "extended needs 'Surface tension form = sharp' and "
+                        "extended needs 'Surface tension form = sharp' (or "
+                        "sharp-curvature) and "
                         "the iterative linear solver, and refuses "
                         "viscoelastic melts.");
       prm.declare_entry("Ghost penalty",
@@ -128,7 +135,8 @@ namespace levelsinter
       "Surface tension form",
       {{"csf", SurfaceTensionForm::csf},
        {"sharp", SurfaceTensionForm::sharp},
-       {"csf-curvature", SurfaceTensionForm::csf_curvature}});
+       {"csf-curvature", SurfaceTensionForm::csf_curvature},
+       {"sharp-curvature", SurfaceTensionForm::sharp_curvature}});
     semi_implicit_surface_tension =
       read_selection<bool>(prm,
                            "Viscous flow",
@@ -167,10 +175,12 @@ namespace levelsinter
       fail_entry("Viscous flow/Linear solver",
                  "must be 'iterative' with 'Pressure space = extended'");
     if (enabled && pressure_space == PressureSpace::extended &&
-        surface_tension_form != SurfaceTensionForm::sharp)
+        surface_tension_form != SurfaceTensionForm::sharp &&
+        surface_tension_form != SurfaceTensionForm::sharp_curvature)
       fail_entry("Viscous flow/Surface tension form",
-                 "must be 'sharp' with 'Pressure space = extended' (the "
-                 "pressure jumps at alpha_h = 0, where the load acts)");
+                 "must be 'sharp' or 'sharp-curvature' with 'Pressure space "
+                 "= extended' (the pressure jumps at alpha_h = 0, where the "
+                 "load acts)");
 
     if (!enabled)
       return;

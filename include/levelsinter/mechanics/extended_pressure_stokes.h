@@ -38,7 +38,9 @@ namespace levelsinter
    * and moduli, each phase's pressure tested only on its side, the ASGS
    * stabilisation of each phase within it (so it never acts on the
    * Laplace jump), the atmosphere's compressibility up to the interface,
-   * and the tensorial surface tension (Eq. 108) on {alpha_h = 0}. A
+   * and the surface tension on {alpha_h = 0}: tensorial (Eq. 108), or the
+   * curvature load gamma kappa_h n, which a constant solid pressure
+   * balances exactly (CurvatureSurfaceTensionAssembler). A
    * pressure ghost penalty on the faces of cut cells
    * (GhostPenaltyAssembler) keeps a phase's pressure bounded on small cut
    * parts. Off the cells that hold its phase a pressure's DoFs are
@@ -57,8 +59,8 @@ namespace levelsinter
     using Settings    = typename TwoPhaseStokes<dim>::Settings;
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
 
-    /** @p settings as for TwoPhaseStokes, with the sharp surface-tension
-     * form and the iterative solver; @p ghost_penalty: g of
+    /** @p settings as for TwoPhaseStokes, with a sharp surface-tension
+     * form (sharp or sharp_curvature) and the iterative solver; @p ghost_penalty: g of
      * GhostPenaltyAssembler. */
     ExtendedPressureStokes(const Triangulation<dim> &tria,
                            const Settings           &settings,
@@ -68,8 +70,9 @@ namespace levelsinter
     void
     setup_dofs() override;
 
-    /** @p curvature and @p interface_level_set are not read (the sharp
-     * tensorial form needs neither). */
+    /** @p curvature: the nodal curvature of the sharp-curvature form (not
+     * read by the sharp tensorial form); @p interface_level_set is not
+     * read. */
     void
     assemble(const LevelSetField<dim>            &alpha,
              const TrilinosWrappers::MPI::Vector &curvature,

@@ -89,6 +89,34 @@ namespace levelsinter
   };
 
   /**
+   * Surface tension as a curvature load on the sharp surface (Eq. 100 with
+   * the exact Dirac): -gamma int_Gamma kappa_h n . w over {alpha_h = 0},
+   * kappa_h the nodal curvature at the cut-cell points (SurfacePoint::
+   * curvature). With the extended pressure it is balanced: for a constant
+   * kappa_h, v = 0 with the solid pressure gamma kappa_h and the fluid's 0
+   * solves the discrete problem, since int_{alpha_h < 0} div w = int_Gamma
+   * w . n on the cut cells (the divergence theorem, which the cut-cell
+   * quadrature of both keeps to its order; with the 2 pi r weight and the
+   * hoop term w_r / r on a body of revolution too), and the ASGS and
+   * ghost-penalty terms vanish on a constant.
+   */
+  template <int dim>
+  class CurvatureSurfaceTensionAssembler : public StokesAssembler<dim>
+  {
+  public:
+    explicit CurvatureSurfaceTensionAssembler(const double gamma)
+      : gamma(gamma)
+    {}
+
+    void
+    assemble(const StokesCellData<dim> &data,
+             CellContribution          &cell) const override;
+
+  private:
+    const double gamma;
+  };
+
+  /**
    * Balanced-force surface tension (Eq. 100 as f = gamma kappa_h grad H_h,
    * the cell data's balanced_force): f . w in the momentum rows and the
    * consistent residual term -tau_K f . grad q in the pressure rows.

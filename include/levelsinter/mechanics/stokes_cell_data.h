@@ -69,6 +69,8 @@ namespace levelsinter
       const TrilinosWrappers::MPI::BlockVector &displacement;
       // The balanced force gamma kappa_h grad H_h (csf-curvature): nodal
       // kappa_h and H_h on the level set's DoFs, ghosted; none otherwise.
+      // The sharp curvature load (sharp-curvature) reads kappa_h alone, at
+      // the sharp surface's points.
       const TrilinosWrappers::MPI::Vector *curvature      = nullptr;
       const TrilinosWrappers::MPI::Vector *solid_fraction = nullptr;
       double                               surface_tension = 0;
@@ -96,6 +98,11 @@ namespace levelsinter
       std::vector<Tensor<2, dim>> grad_w;
       // w_r / r per shape function (0 off the axisymmetric case).
       std::vector<double> hoop;
+      // w . n per shape function.
+      std::vector<double> normal_w;
+      // The nodal curvature kappa_h at the point (Inputs::curvature with
+      // the sharp surface; 0 without).
+      double curvature = 0;
 
       /** The tangential projector I - n (x) n. */
       Tensor<2, dim>
@@ -224,6 +231,8 @@ namespace levelsinter
     gather_sharp_surface(
       const typename DoFHandler<dim>::active_cell_iterator &cell);
 
+    /** The points of @p cut; with Inputs::curvature, kappa_h from its
+     * values at the cell's vertices (vertex_kappa). */
     void
     add_surface_points(const NonMatching::FEImmersedSurfaceValues<dim> &cut);
 
@@ -253,6 +262,7 @@ namespace levelsinter
     std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
     // At the volume points (sized for the largest rule).
     Vector<double>                       vertex_alpha;
+    Vector<double>                       vertex_kappa;
     std::vector<double>                  alpha_q;
     std::vector<Tensor<1, dim>>          grad_alpha_q;
     std::vector<double>                  kappa_q;

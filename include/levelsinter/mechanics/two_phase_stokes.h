@@ -33,7 +33,7 @@ namespace levelsinter
    *   -int q div v - int c_p p q - sum_K int_K tau_K (grad p - f) . grad q = 0
    * Equal-order Q1/Q1 with ASGS pressure stabilisation (Eq. 98),
    * tau_K = c_tau a2 h_K^2 / a1 (Eq. 99, c_tau = 1 there). Surface tension
-   * (sign of Laplace's law p_in - p_out = gamma kappa) in one of three
+   * (sign of Laplace's law p_in - p_out = gamma kappa) in one of four
    * forms:
    * - tensorial (Eq. 108), F_gamma(w) = -gamma int_Gamma (I - n (x) n) :
    *   grad w, over Gamma either smeared with the regularised Dirac (csf,
@@ -51,11 +51,17 @@ namespace levelsinter
    *   of the pressure space, so (v, p) = (0, p_h) solves the discrete
    *   problem exactly; the residual-consistent stabilisation (the same f in
    *   tau_K (grad p - f)) keeps it so.
+   * - sharp_curvature, F_gamma(w) = -gamma int_Gamma kappa_h n . w on
+   *   {alpha_h = 0} (cut-cell quadrature, CurvatureSurfaceTensionAssembler):
+   *   balanced with the extended pressure (ExtendedPressureStokes), where a
+   *   constant kappa_h is met by a constant solid pressure; with the one
+   *   continuous pressure here the jump stays smeared (doc/numerics.md,
+   *   "Sharp interfaces").
    * A positive surface time step dt in assemble() makes the load
    * semi-implicit (Baensch 2001): the Laplace-Beltrami form at the new
    * position x + dt v adds dt gamma int_Gamma grad_Gamma v : grad_Gamma w
    * to the velocity block, on the same surface measure as the load (sharp
-   * for sharp, smeared otherwise).
+   * for the sharp forms, smeared otherwise).
    * Each term is one StokesAssembler (stokes_assemblers.h), or a
    * StokesFaceAssembler for a term on the free box faces, over the cell
    * data of StokesCellData, which gathers what they read; a law with
@@ -71,7 +77,8 @@ namespace levelsinter
     {
       csf,
       sharp,
-      csf_curvature
+      csf_curvature,
+      sharp_curvature
     };
 
     struct Settings

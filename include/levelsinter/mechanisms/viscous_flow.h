@@ -22,9 +22,10 @@ namespace levelsinter
   /**
    * Viscous sintering: Newtonian particles flow under their own surface
    * tension. Each step solves the two-phase Stokes problem from alpha and
-   * adds its velocity to the interface velocity. The csf-curvature form
-   * gets its curvature from the level set (projection, see
-   * update_curvature()) unless a test prescribes the exact one. The
+   * adds its velocity to the interface velocity. The csf-curvature and
+   * sharp-curvature forms get their curvature from the level set
+   * (projection, see update_curvature()) unless a test prescribes the
+   * exact one. The
    * polymer of a viscoelastic melt is a ViscoelasticState, whose fields
    * and metrics this mechanism passes on.
    */
@@ -97,7 +98,7 @@ namespace levelsinter
 
     /**
      * The last Stokes solution (velocity and pressure) and, in the
-     * csf-curvature form, the curvature it used.
+     * curvature forms, the curvature it used.
      */
     void
     add_output_fields(const LevelSetField<dim> &alpha,
@@ -145,7 +146,7 @@ namespace levelsinter
     }
 
     /** Nodal curvature on the level-set DoFs used by the last solve
-     * (csf-curvature form only; empty otherwise). */
+     * (the curvature forms only; empty otherwise). */
     const TrilinosWrappers::MPI::Vector &
     curvature() const
     {

@@ -15,7 +15,8 @@ namespace levelsinter
     {
       csf,
       sharp,
-      csf_curvature
+      csf_curvature,
+      sharp_curvature
     };
 
     enum class LinearSolver
