@@ -176,3 +176,13 @@ grains_run(grains_two_2d_volume_correction grains_two_2d.prm 20
 grains_check(grains_two_2d_volume_correction_densify
   grains_two_2d_volume_correction densify grains_two_2d_volume_correction
   4e-3 1e-5 1e-5)
+
+# RayCaster on rays along mesh faces (tests/ray_caster_test.cc): origins on
+# faces, directions along an axis, exact or tilted by 1e-16 ... 1e-9 rad;
+# every exit within h^2 / R of the ball's surface. 1 and 2 ranks (the
+# rays cross the ranks' partition).
+add_executable(ray_caster_test ray_caster_test.cc)
+target_link_libraries(ray_caster_test levelsinter_lib levelsinter_study)
+deal_ii_setup_target(ray_caster_test)
+ranks_test(ray_caster_2d COMMAND $<TARGET_FILE:ray_caster_test> 2 6)
+ranks_test(ray_caster_3d COMMAND $<TARGET_FILE:ray_caster_test> 3 4)
