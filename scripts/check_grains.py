@@ -34,6 +34,19 @@ if a check fails.
   check_grains.py same RUN_A RUN_B COLUMN RELATIVE_TOLERANCE
       COLUMN of RUN_A/metrics.csv and RUN_B/metrics.csv agree at the rows of
       equal time, relative to the largest |value| of RUN_A.
+  check_grains.py equilibrium RUN RATIO BODY_DIM [--csv OUT.csv]
+      two equal grains at their end state against the exact equilibrium
+      of the same solid volume (doc/numerics.md, "The dihedral angle at the
+      triple line"): two truncated discs (BODY_DIM 2) or spheres (3)
+      meeting at psi, cos(psi/2) = RATIO / 2; prints the radius (the
+      circle fitted to each grain), the grain-boundary radius, the fitted
+      circles' centre distance and the dihedral angle, measured and exact;
+      with --csv the table over the run.
+  check_grains.py initial RUN R TOLERANCE_DEGREES RELATIVE_TOLERANCE
+      step 0 of grain_boundaries.csv (two overlapping circles of radius
+      R): the dihedral angle where the circles meet, cos(psi/2) = d / (2
+      R), within TOLERANCE_DEGREES, the fitted radius and centre distance
+      within RELATIVE_TOLERANCE of R and d.
 """
 import csv
 import math
@@ -158,6 +171,68 @@ def kinetics(run, radius, c_gb, t_fit, out):
         writer.writerows([[f"{v:.6g}" for v in row] for row in table])
 
 
+def exact_equilibrium(volume, ratio, body):
+    """(R, a, d, psi in degrees) of two equal grains of total volume
+    `volume` (area in 2D) meeting at psi, cos(psi/2) = ratio / 2."""
+    c = ratio / 2
+    beta = math.acos(c)
+    if body == 2:
+        # Each grain: a disc of radius R less the segment beyond the chord
+        # at R cos(beta): area R^2 (pi - beta + sin(beta) cos(beta)).
+        radius = math.sqrt(volume / 2 / (math.pi - beta + math.sin(beta) * c))
+    else:
+        # A ball less the cap of height R (1 - c): pi R^3 (4 - (1 - c)^2
+        # (2 + c)) / 3.
+        radius = (volume / 2 / (math.pi * (4 - (1 - c) ** 2 * (2 + c)) / 3)) ** (1 / 3)
+    return radius, radius * math.sin(beta), 2 * radius * c, 2 * math.degrees(beta)
+
+
+def equilibrium(run, ratio, body, out):
+    metrics = rows(run + "/metrics.csv")
+    pairs = rows(run + "/grain_boundaries.csv")
+    volume = {row["step"]: row["solid_volume"] for row in metrics}
+    table = []
+    for row in pairs:
+        if row["step"] not in volume:
+            continue
+        exact = exact_equilibrium(volume[row["step"]], ratio, body)
+        measured = (row["fitted_radius"], row["radius"],
+                    row["fitted_centre_distance"], row["dihedral_angle"])
+        table.append((row["step"], row["time"]) + measured + exact)
+    last = table[-1]
+    names = ("radius R", "grain-boundary radius a", "centre distance d",
+             "dihedral angle psi (degrees)")
+    print("t = %g (step %d), gamma_gb / gamma_s = %g" % (last[1], last[0], ratio))
+    for k, name in enumerate(names):
+        m, e = last[2 + k], last[6 + k]
+        error = m - e if k == 3 else (m - e) / e
+        print("  %-30s measured %.5g exact %.5g  %s %.3g" %
+              (name, m, e, "difference" if k == 3 else "relative error", error))
+    if out:
+        with open(out, "w") as f:
+            f.write("step,time,radius,gb_radius,centre_distance,dihedral_angle,"
+                    "exact_radius,exact_gb_radius,exact_centre_distance,"
+                    "exact_dihedral_angle\n")
+            for r in table:
+                f.write(",".join("%.8g" % v for v in r) + "\n")
+
+
+def initial(run, radius, tolerance_degrees, tolerance):
+    row = rows(run + "/grain_boundaries.csv")[0]
+    d = row["centre_distance"]
+    psi = 2 * math.degrees(math.acos(d / 2 / radius))
+    print("step 0: dihedral angle %.4g (exact %.4g), fitted radius %.6g "
+          "(%.6g), fitted centre distance %.6g (%.6g)" %
+          (row["dihedral_angle"], psi, row["fitted_radius"], radius,
+           row["fitted_centre_distance"], d))
+    if not abs(row["dihedral_angle"] - psi) <= tolerance_degrees:
+        fail("dihedral angle off by more than %g degrees" % tolerance_degrees)
+    if not abs(row["fitted_radius"] - radius) <= tolerance * radius:
+        fail("fitted radius off by more than %g" % tolerance)
+    if not abs(row["fitted_centre_distance"] - d) <= tolerance * d:
+        fail("fitted centre distance off by more than %g" % tolerance)
+
+
 def run_distance(run):
     # The centre distance at t = 0, from grain_boundaries.csv.
     first = rows(run + "/grain_boundaries.csv")[0]
@@ -176,6 +251,11 @@ if __name__ == "__main__":
         equal(args[0], float(args[1]))
     elif mode == "kinetics":
         kinetics(args[0], float(args[1]), float(args[2]), float(args[3]), args[5])
+    elif mode == "equilibrium":
+        equilibrium(args[0], float(args[1]), int(args[2]),
+                    args[4] if len(args) > 4 and args[3] == "--csv" else None)
+    elif mode == "initial":
+        initial(args[0], *map(float, args[1:4]))
     elif mode == "same":
         same(args[0], args[1], args[2], float(args[3]))
     else:

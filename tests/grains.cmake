@@ -150,21 +150,23 @@ foreach(case "3;0.075;0.05;16" "4;0.0375;0.025;32")
   set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
     LABELS validation-long)
 endforeach()
-# The 8-grain packing to t = 2.4 (25 steps, about 2-5 min on 1 core): the
-# densification curve.
-add_test(NAME study_grains_packing_8_3d_run COMMAND $<TARGET_FILE:levelsinter>
-  --overwrite --set "Output/Field formats=none"
-  --set "Output/Directory=study_grains_packing_8_3d"
-  ${GRAIN_SCENES}/grains_packing_8_3d.prm)
-add_test(NAME study_grains_packing_8_3d
-  COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py
-    study_grains_packing_8_3d
-    ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.png
-    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_8_3d.csv)
-set_tests_properties(study_grains_packing_8_3d_run PROPERTIES
-  FIXTURES_SETUP study_grains_packing_8_3d LABELS validation-long)
-set_tests_properties(study_grains_packing_8_3d PROPERTIES
-  FIXTURES_REQUIRED study_grains_packing_8_3d LABELS validation-long)
+# The densification curves: the 8-grain packing to t = 2.4 (25 steps,
+# about 2-5 min on 1 core) and the 27 grains to t = 3 (15 steps, 157 s
+# wall and 66 s CPU on 1 core at the load of the session).
+foreach(n 8 27)
+  set(name study_grains_packing_${n}_3d)
+  add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter>
+    --overwrite --set "Output/Field formats=none"
+    --set "Output/Directory=${name}" ${GRAIN_SCENES}/grains_packing_${n}_3d.prm)
+  add_test(NAME ${name}
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py ${name}
+      ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_${n}_3d.png
+      --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_${n}_3d.csv)
+  set_tests_properties(${name}_run PROPERTIES
+    FIXTURES_SETUP ${name} LABELS validation-long)
+  set_tests_properties(${name} PROPERTIES
+    FIXTURES_REQUIRED ${name} LABELS validation-long)
+endforeach()
 
 # With the volume correction on (Eq. 113-116 after both mechanisms) the
 # solid and every grain keep their volume: measured |volume_change| and
@@ -176,3 +178,87 @@ grains_run(grains_two_2d_volume_correction grains_two_2d.prm 20
 grains_check(grains_two_2d_volume_correction_densify
   grains_two_2d_volume_correction densify grains_two_2d_volume_correction
   4e-3 1e-5 1e-5)
+
+# RayCaster on rays along mesh faces (tests/ray_caster_test.cc): origins on
+# faces, directions along an axis, exact or tilted by 1e-16 ... 1e-9 rad;
+# every exit within h^2 / R of the ball's surface. 1 and 2 ranks (the
+# rays cross the ranks' partition).
+add_executable(ray_caster_test ray_caster_test.cc)
+target_link_libraries(ray_caster_test levelsinter_lib levelsinter_study)
+deal_ii_setup_target(ray_caster_test)
+ranks_test(ray_caster_2d COMMAND $<TARGET_FILE:ray_caster_test> 2 6)
+ranks_test(ray_caster_3d COMMAND $<TARGET_FILE:ray_caster_test> 3 4)
+
+# --- The dihedral angle at the triple line (issue 28, second increment;
+# doc/numerics.md and doc/validation.md, "The dihedral angle at the triple
+# line") ----------------------------------------------------------------
+# The triple-line condition on the pair of grains_two_2d.prm (gamma_gb /
+# gamma_s = 0.5), 10 steps, 1 and 2 ranks: measured largest relative
+# difference 6.6e-8 (as without it); limit 1e-6. The pair of
+# grains_equilibrium_2d.prm is not used here: its first step's speed at
+# the under-resolved initial cusp differs by 1.1e-3 between 1 and 2 ranks
+# with the condition on or off (the kappa / v_s solve there).
+ranks_agree(grains_two_2d_triple_line grains_two_2d_triple_line
+  ${GRAIN_SCENES}/grains_two_2d.prm 1e-6
+  "surface_diffusion_iterations;transport_iterations"
+  --set "Grain boundaries/Triple-line condition=true"
+  --set "Time/Maximum steps=10" --set "Output/Metrics interval=1"
+  --set "Output/Progress interval=0")
+# With the triple-line potential in kappa the contact law reads the neck
+# root's chemical potential; the force balance still reproduces the law
+# at every step: measured 4.7e-12 (as grains_two_2d_law).
+grains_check(grains_two_2d_triple_line_law grains_two_2d_triple_line_np1 law
+  grains_two_2d_triple_line_np1 1e-6 0.5 2 1e-9)
+# The measurement of the dihedral angle (circles fitted to each grain's
+# surface beyond the triple-line kernel, met with the grain boundary's
+# plane) on the initial state of grains_equilibrium_2d.prm at R/h = 16,
+# two circles of R = 0.25 meeting at psi = 25.42 degrees: measured 25.74
+# degrees (25.32 at R/h = 32), the fitted radius 2.9e-4 and the centre
+# distance 6e-6 off. Limits 1 degree, 1e-3.
+grains_run(grains_equilibrium_2d grains_equilibrium_2d.prm 1
+  --set "Mesh refinement/Maximum level=4"
+  --set "Level set/Filter thickness=0.094"
+  --set "Mesh refinement/Band width=0.062")
+grains_check(grains_equilibrium_2d_initial grains_equilibrium_2d initial
+  grains_equilibrium_2d 0.25 1 1e-3)
+# The end state against the exact equilibrium (t = 0.01, R/h = 16 and 32,
+# gamma_gb / gamma_s = 0.5 and 1; kernel l = 6 h): studies, 5-100 s CPU per
+# run, not yet within the issue's 1 % (doc/validation.md).
+foreach(case "4;0.094;0.062;16;1" "5;0.047;0.031;32;1" "4;0.094;0.062;16;0.5")
+  list(GET case 0 level)
+  list(GET case 1 filter)
+  list(GET case 2 band)
+  list(GET case 3 resolution)
+  list(GET case 4 ratio)
+  set(name study_grains_equilibrium_2d_R${resolution}_ratio${ratio})
+  add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "Output/Metrics interval=10"
+    --set "Mesh refinement/Maximum level=${level}"
+    --set "Level set/Filter thickness=${filter}"
+    --set "Mesh refinement/Band width=${band}"
+    --set "Grain boundaries/Energy ratio=${ratio}"
+    --set "Grain boundaries/Deposition width=6"
+    --set "Time/End time=0.01" --set "Output/Directory=${name}"
+    ${GRAIN_SCENES}/grains_equilibrium_2d.prm)
+  add_test(NAME ${name} COMMAND ${CHECK_GRAINS} equilibrium ${name} ${ratio} 2
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_equilibrium_2d_R${resolution}_ratio${ratio}.csv)
+  set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
+    LABELS validation-long)
+  set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
+    LABELS validation-long)
+endforeach()
+
+# --- The 27-grain packing (grains_packing_27_3d.prm) ----------------------
+# 2 steps at h = 0.05 on 1 and 2 ranks (about 30 s CPU, 3 min wall at the
+# session's load): measured largest relative difference 5.8e-9, limit
+# 1e-6. The grains approach by 4.36e-3 (grain_centre_distance_change_mean),
+# |volume_change| 1.03e-4 (the volume correction), grain_volume_change_max
+# 2.8e-3 (the partition moves matter between grains, doc/validation.md);
+# limits 3e-3, 2e-4, 5e-3.
+ranks_agree(grains_packing_27_3d grains_packing_27_3d
+  ${GRAIN_SCENES}/grains_packing_27_3d.prm 1e-6
+  "surface_diffusion_iterations;transport_iterations"
+  --set "Time/Maximum steps=2" --set "Output/Metrics interval=1"
+  --set "Output/Progress interval=0")
+grains_check(grains_packing_27_3d_densify grains_packing_27_3d_np1 densify
+  grains_packing_27_3d_np1 3e-3 2e-4 5e-3)

@@ -208,7 +208,7 @@ namespace levelsinter
     std::vector<double>                  alpha_values(nq);
     std::vector<Tensor<1, dim>> alpha_gradients(nq), lag_gradients(nq),
       normal_gradients(nq);
-    std::vector<double> divergence(nq), radial_normal(nq);
+    std::vector<double> divergence(nq), radial_normal(nq), mu(nq);
 
     // DoFs no band cell touches get kappa = v_s = 0 (identity rows).
     Vector touched;
@@ -237,6 +237,12 @@ namespace levelsinter
               fe_values.get_function_gradients(normals[c], normal_gradients);
               for (unsigned int q = 0; q < nq; ++q)
                 divergence[q] += normal_gradients[q][c];
+            }
+          if (potential)
+            {
+              fe_values.get_function_values(*potential, mu);
+              for (unsigned int q = 0; q < nq; ++q)
+                divergence[q] += mu[q];
             }
           m_kk = 0;
           m_kv = 0;

@@ -234,7 +234,20 @@ namespace levelsinter::interface_measures
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          boxes.emplace_back(cell->bounding_box(), cell);
+          // Each box widened by 1e-8 of the cell: a ray along a face, or
+          // tilted out of it by rounding (1e-15 rad), then runs inside the
+          // boxes on both sides. Boost's segment-box test decides such a
+          // ray by the sign of rounding errors and missed both cells (exit
+          // +infinity; tests/ray_caster_test.cc).
+          auto [lower, upper] = cell->bounding_box().get_boundary_points();
+          const double margin = 1e-8 * cell->diameter();
+          for (unsigned int d = 0; d < dim; ++d)
+            {
+              lower[d] -= margin;
+              upper[d] += margin;
+            }
+          boxes.emplace_back(BoundingBox<dim>(std::make_pair(lower, upper)),
+                             cell);
           if (boxes.size() == 1)
             extent = boxes[0].first;
           extent.merge_with(boxes.back().first);

@@ -20,7 +20,7 @@ namespace levelsinter
     const GrainBoundaryParameters          &parameters,
     const std::vector<std::vector<double>> &particles,
     const double                            seconds_per_time_unit,
-    const SurfaceDiffusion<dim>            &surface_diffusion,
+    SurfaceDiffusion<dim>                  &surface_diffusion,
     TimerOutput                            &timer)
     : parameters(parameters)
     , mobility(parameters.coefficient * seconds_per_time_unit)
@@ -36,6 +36,11 @@ namespace levelsinter
         radii.push_back(p[dim]);
       }
     trial_velocity.resize(centre.size());
+    if (parameters.triple_line && parameters.energy_ratio > 0)
+      surface_diffusion.set_potential_source(
+        [this](const LevelSetField<dim> &alpha, auto &mu) {
+          triple_line_potential(alpha, mu);
+        });
   }
 
   template <int dim>
@@ -53,23 +58,16 @@ namespace levelsinter
   }
 
   template <int dim>
-  void
-  GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha)
+  std::vector<double>
+  GrainBoundaryDiffusion<dim>::kernel_sums(
+    const LevelSetField<dim>        &alpha,
+    const MixedCurvatureSolver<dim> *geometry) const
   {
-    TimerOutput::Scope scope(timer, "grain-boundary diffusion");
-    const auto boundaries =
-      grain_geometry::find_grain_boundaries(alpha, grains());
-    h_min            = finest_cell_size(alpha.dof_handler().get_triangulation());
-    deposition_width = parameters.deposition_width * h_min;
-
     // Per boundary, over the discrete interface: the deposition's volume
-    // rate per unit speed, int I_h(w N) . n (W), and int I_h(w kappa),
-    // int I_h(w) for the mean root curvature; one pass for all.
+    // rate per unit speed, int I_h(w N) . n (W), and int I_h(w kappa) (with
+    // @p geometry's N and kappa), and int I_h(w); one pass for all.
     const unsigned int  nb = boundaries.size();
     std::vector<double> sums(3 * nb, 0.);
-    const auto         &geometry = surface_diffusion.geometry();
-    const auto         &kappa    = geometry.curvature();
-    const auto         &normals  = geometry.nodal_normals();
     std::vector<types::global_dof_index> indices(alpha.fe().n_dofs_per_cell());
     std::vector<double>                  w(indices.size());
     interface_measures::RegionIntegrands<dim> integrands;
@@ -80,22 +78,7 @@ namespace levelsinter
       cell->get_dof_indices(indices);
       for (unsigned int b = 0; b < nb; ++b)
         {
-          const auto  &boundary = boundaries[b];
-          const double reach    = std::max({boundary.radius,
-                                         boundary.end_distance[0],
-                                         boundary.end_distance[1]}) +
-                               2 * deposition_width + cell->diameter();
-          if (cell->center().distance(boundary.origin) > reach)
-            continue;
-          bool any = false;
-          for (unsigned int v = 0; v < indices.size(); ++v)
-            {
-              w[v] = grain_geometry::triple_line_weight(boundary,
-                                                        cell->vertex(v),
-                                                        deposition_width);
-              any  = any || w[v] > 0;
-            }
-          if (!any)
+          if (!kernel_weights(boundaries[b], cell, w))
             continue;
           for (const unsigned int q : values.quadrature_point_indices())
             {
@@ -105,9 +88,13 @@ namespace levelsinter
                 {
                   const double phi = values.shape_value(v, q) * w[v];
                   weight += phi;
-                  weighted_kappa += phi * kappa(indices[v]);
-                  for (unsigned int c = 0; c < dim; ++c)
-                    weighted_normal[c] += phi * normals[c](indices[v]);
+                  if (geometry)
+                    {
+                      weighted_kappa += phi * geometry->curvature()(indices[v]);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        weighted_normal[c] +=
+                          phi * geometry->nodal_normals()[c](indices[v]);
+                    }
                 }
               const double JxW = alpha.measure().JxW(values, q);
               sums[3 * b] += weighted_normal * values.normal_vector(q) * JxW;
@@ -118,6 +105,92 @@ namespace levelsinter
     };
     interface_measures::integrate_regions(alpha, integrands);
     Utilities::MPI::sum(sums, alpha.dof_handler().get_communicator(), sums);
+    return sums;
+  }
+
+  template <int dim>
+  bool
+  GrainBoundaryDiffusion<dim>::kernel_weights(
+    const grain_geometry::GrainBoundary<dim>            &boundary,
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    std::vector<double>                                  &w) const
+  {
+    const double reach = std::max({boundary.radius,
+                                   boundary.end_distance[0],
+                                   boundary.end_distance[1]}) +
+                         2 * deposition_width + cell->diameter();
+    if (cell->center().distance(boundary.origin) > reach)
+      return false;
+    bool any = false;
+    for (unsigned int v = 0; v < w.size(); ++v)
+      {
+        w[v] = grain_geometry::triple_line_weight(boundary,
+                                                  cell->vertex(v),
+                                                  deposition_width);
+        any  = any || w[v] > 0;
+      }
+    return any;
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::find_boundaries(const LevelSetField<dim> &alpha)
+  {
+    boundaries = grain_geometry::find_grain_boundaries(alpha, grains());
+    h_min      = finest_cell_size(alpha.dof_handler().get_triangulation());
+    deposition_width = parameters.deposition_width * h_min;
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::triple_line_potential(
+    const LevelSetField<dim>      &alpha,
+    TrilinosWrappers::MPI::Vector &mu)
+  {
+    TimerOutput::Scope scope(timer, "grain-boundary diffusion");
+    find_boundaries(alpha);
+    boundaries_current = true;
+    // mu = S P_b w_b / int I_h(w_b): across each triple line the potential
+    // integrates to S = pi - psi per unit length of the line (P_b its
+    // length in the domain), the turning of the surface's tangent there at
+    // equilibrium.
+    const auto          sums = kernel_sums(alpha, nullptr);
+    std::vector<double> scale(boundaries.size(), 0.);
+    for (unsigned int b = 0; b < boundaries.size(); ++b)
+      if (sums[3 * b + 2] > 0)
+        scale[b] = parameters.triple_line_turning() *
+                   boundaries[b].perimeter * boundaries[b].area_in_domain /
+                   boundaries[b].area / sums[3 * b + 2];
+    // Every cell holding a node sees the same kernels there
+    // (kernel_weights' reach), so each writes the same sum.
+    mu = 0;
+    std::vector<double> w(alpha.fe().n_dofs_per_cell()), value(w.size());
+    for (const auto &cell : alpha.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          std::fill(value.begin(), value.end(), 0.);
+          for (unsigned int b = 0; b < boundaries.size(); ++b)
+            if (scale[b] > 0 && kernel_weights(boundaries[b], cell, w))
+              for (unsigned int v = 0; v < w.size(); ++v)
+                value[v] += scale[b] * w[v];
+          for (unsigned int v = 0; v < w.size(); ++v)
+            if (const auto i = cell->vertex_dof_index(v, 0);
+                alpha.locally_owned().is_element(i))
+              mu(i) = value[v];
+        }
+    mu.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha)
+  {
+    TimerOutput::Scope scope(timer, "grain-boundary diffusion");
+    if (!boundaries_current)
+      find_boundaries(alpha);
+    boundaries_current = false;
+    const unsigned int nb   = boundaries.size();
+    const auto         sums = kernel_sums(alpha, &surface_diffusion.geometry());
 
     // A boundary whose triple line the kernel does not see on the
     // interface has no neck to deposit at: no contact.

@@ -75,6 +75,7 @@ namespace levelsinter
                                       const double              dt,
                                       VelocityField<dim>       &velocity)
   {
+    update_potential(alpha);
     iterations = solver.solve(alpha, mobility, dt, previous_velocity);
     add_normal_velocity(alpha, velocity);
   }
@@ -85,8 +86,32 @@ namespace levelsinter
                                             const double,
                                             VelocityField<dim> &velocity)
   {
+    update_potential(alpha);
     iterations = solver.solve(alpha, mobility, 0, previous_velocity);
     add_normal_velocity(alpha, velocity);
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::set_potential_source(
+    const std::function<void(const LevelSetField<dim> &,
+                             TrilinosWrappers::MPI::Vector &)> &source)
+  {
+    potential_source = source;
+  }
+
+  template <int dim>
+  void
+  SurfaceDiffusion<dim>::update_potential(const LevelSetField<dim> &alpha)
+  {
+    if (!potential_source)
+      return;
+    const MPI_Comm comm = alpha.dof_handler().get_communicator();
+    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+    potential_source(alpha, owned);
+    potential.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
+    potential = owned;
+    solver.set_potential(&potential);
   }
 
   template <int dim>

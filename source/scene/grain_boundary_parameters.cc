@@ -48,6 +48,15 @@ namespace levelsinter
                         "the triple line where the matter taken out of the "
                         "grain boundary is deposited and the neck-root "
                         "curvature is averaged.");
+      prm.declare_entry("Triple-line condition",
+                        "false",
+                        Patterns::Bool(),
+                        "Surface diffusion respects the dihedral angle psi "
+                        "at the triple lines: the chemical potential of the "
+                        "surface carries the grain-boundary energy there "
+                        "(doc/numerics.md, \"The dihedral angle at the "
+                        "triple line\"), and the neck root's curvature of "
+                        "the contact law is that potential.");
     }
     prm.leave_subsection();
   }
@@ -61,6 +70,7 @@ namespace levelsinter
     coefficient        = prm.get_double("Coefficient");
     sliding_resistance = prm.get_double("Sliding resistance");
     deposition_width   = prm.get_double("Deposition width");
+    triple_line        = prm.get_bool("Triple-line condition");
     prm.leave_subsection();
     if (!enabled)
       return;
@@ -78,5 +88,11 @@ namespace levelsinter
   {
     const double c = energy_ratio / 2;
     return std::sqrt(1 - c * c);
+  }
+
+  double
+  GrainBoundaryParameters::triple_line_turning() const
+  {
+    return 2 * std::asin(energy_ratio / 2);
   }
 } // namespace levelsinter

@@ -117,6 +117,20 @@ namespace levelsinter
       return normals;
     }
 
+    /**
+     * A chemical potential mu (ghosted, on the level set's DoFs; nullptr:
+     * none) added to the curvature from the next solve on: the kappa row
+     * then holds kappa + mu and v_s = C Delta_s (kappa + mu), which
+     * curvature() returns. The regularised triple-line condition of grain
+     * boundaries (GrainBoundaryDiffusion); the vector must live until the
+     * solve.
+     */
+    void
+    set_potential(const Vector *mu)
+    {
+      potential = mu;
+    }
+
   private:
     void
     assemble(const LevelSetField<dim> &level_set,
@@ -146,6 +160,7 @@ namespace levelsinter
     Vector                         kappa;
     Vector                         velocity;
     std::array<Vector, dim>        normals;
+    const Vector                  *potential = nullptr;
 
   public:
     /** CPU seconds of the last linear solve, summed over the ranks. */

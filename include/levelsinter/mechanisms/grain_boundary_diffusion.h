@@ -33,7 +33,7 @@ namespace levelsinter
     GrainBoundaryDiffusion(const GrainBoundaryParameters          &parameters,
                            const std::vector<std::vector<double>> &particles,
                            const double                 seconds_per_time_unit,
-                           const SurfaceDiffusion<dim> &surface_diffusion,
+                           SurfaceDiffusion<dim>       &surface_diffusion,
                            TimerOutput                 &timer);
 
     std::string
@@ -108,7 +108,38 @@ namespace levelsinter
       return centre;
     }
 
+    /** l: the half-width of the triple-line kernel (last computation). */
+    double
+    kernel_width() const
+    {
+      return deposition_width;
+    }
+
   private:
+    // The grain boundaries at the accepted centres on @p alpha.
+    void
+    find_boundaries(const LevelSetField<dim> &alpha);
+
+    // The triple-line condition's chemical potential mu on the level set's
+    // DoFs (SurfaceDiffusion::set_potential_source), from the grain
+    // boundaries it finds, which compute() of the same state then uses.
+    void
+    triple_line_potential(const LevelSetField<dim>      &alpha,
+                          TrilinosWrappers::MPI::Vector &mu);
+
+    // The kernel w of @p boundary at the vertices of @p cell into @p w;
+    // false if it is zero at all of them.
+    bool
+    kernel_weights(const grain_geometry::GrainBoundary<dim>            &boundary,
+                   const typename DoFHandler<dim>::active_cell_iterator &cell,
+                   std::vector<double> &w) const;
+
+    // Per boundary: int over the interface of I_h(w N) . n, I_h(w kappa)
+    // (N and kappa of @p geometry; zero without) and I_h(w).
+    std::vector<double>
+    kernel_sums(const LevelSetField<dim>        &alpha,
+                const MixedCurvatureSolver<dim> *geometry) const;
+
     // Grain boundaries, root curvatures and the trial velocities from the
     // level set and the accepted centres.
     void
@@ -136,6 +167,10 @@ namespace levelsinter
     std::vector<Tensor<1, dim>>   trial_velocity;
     double                        trial_dt = 0;
     std::vector<Contact>          last_contacts;
+    std::vector<grain_geometry::GrainBoundary<dim>> boundaries;
+    // Whether boundaries are those of the state compute() sees (found by
+    // triple_line_potential() before the surface-diffusion solve).
+    bool boundaries_current = false;
     // Per contact: the deposition speed per unit kernel weight, Q / W.
     std::vector<double>           deposition_speed;
     double                        deposition_width = 0;

@@ -6,6 +6,8 @@
 #include <levelsinter/mechanisms/mechanism.h>
 #include <levelsinter/scene/scene_parameters.h>
 
+#include <functional>
+
 namespace levelsinter
 {
   /**
@@ -90,6 +92,17 @@ namespace levelsinter
       return lag_of_last_step;
     }
 
+    /**
+     * A chemical potential mu that @p source writes (on the level set's
+     * DoFs, locally owned entries) before each solve, added to the
+     * curvature: v_s = C Delta_s (kappa + mu) (MixedCurvatureSolver::
+     * set_potential). The triple-line condition of grain boundaries.
+     */
+    void
+    set_potential_source(
+      const std::function<void(const LevelSetField<dim> &,
+                               TrilinosWrappers::MPI::Vector &)> &source);
+
     /** The coefficient of Delta_s kappa in the time unit of the scene. */
     double
     coefficient() const
@@ -98,6 +111,10 @@ namespace levelsinter
     }
 
   private:
+    // mu of the potential source at the level set's state (ghosted).
+    void
+    update_potential(const LevelSetField<dim> &alpha);
+
     // v = v_s N_alpha (Eq. 84) of the last solve, added to @p velocity.
     void
     add_normal_velocity(const LevelSetField<dim> &alpha,
@@ -111,6 +128,10 @@ namespace levelsinter
     // step used.
     TrilinosWrappers::MPI::Vector previous_velocity;
     TrilinosWrappers::MPI::Vector lag_of_last_step;
+    std::function<void(const LevelSetField<dim> &,
+                       TrilinosWrappers::MPI::Vector &)>
+                                  potential_source;
+    TrilinosWrappers::MPI::Vector potential;
     unsigned int                  iterations = 0;
   };
 } // namespace levelsinter

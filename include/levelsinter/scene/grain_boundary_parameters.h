@@ -29,10 +29,19 @@ namespace levelsinter
     double
     sin_half_dihedral_angle() const;
 
+    /**
+     * pi - psi: the angle the surface's tangent turns through across a
+     * triple line at equilibrium (doc/numerics.md, "The dihedral angle at
+     * the triple line").
+     */
+    double
+    triple_line_turning() const;
+
     bool   enabled            = false;
     double energy_ratio       = 0; // gamma_gb / gamma_s, in [0, 2)
     double coefficient        = 0; // C_gb = delta_gb D_gb gamma_s Omega / kT
     double sliding_resistance = 1; // beta
     double deposition_width   = 2; // l in finest cells
+    bool   triple_line        = false; // the dihedral angle in surface diffusion
   };
 } // namespace levelsinter
