@@ -126,7 +126,9 @@ set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
 # kept). Each case keeps a checkpoint
 # every 5 steps and is resumed where it stopped; metrics at every step, so
 # that the comparison at fixed times interpolates between close rows.
-# About 1 h on 2 cores.
+# Measured (27 Nov 2026, doc/validation.md): CFL 2 / 1 / 0.5 in 24 / 34 /
+# 50 steps, 4.4e3 s wall for the reference on 1 rank of a shared machine;
+# h2 not run yet (about 20 GB).
 add_test(NAME packing_convergence_27 COMMAND
   ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
   $<TARGET_FILE:levelsinter>
