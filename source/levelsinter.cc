@@ -121,11 +121,19 @@ namespace
                       << ", t = " << summary.time << "; metrics.csv is "
                       << "complete up to that step\n";
           else if (root)
-            std::cout << "done: " << summary.steps << " steps to t = "
-                      << summary.time << " in " << summary.wall_time
-                      << " s; at most " << summary.max_cells << " cells, "
-                      << summary.max_dofs << " DoFs; mean GMRES iterations "
-                      << summary.mean_iterations << "\n";
+            {
+              std::cout << "done: " << summary.steps << " steps to t = "
+                        << summary.time << " in " << summary.wall_time
+                        << " s; at most " << summary.max_cells << " cells, "
+                        << summary.max_dofs << " DoFs; mean GMRES iterations "
+                        << summary.mean_iterations;
+              if (summary.shortened_steps > 0)
+                std::cout << "; " << summary.shortened_steps
+                          << " step(s) computed again with a smaller dt "
+                             "after the velocity came out faster than the "
+                             "CFL step allowed";
+              std::cout << "\n";
+            }
         }
       catch (const std::exception &e)
         {

@@ -446,7 +446,12 @@ namespace levelsinter
   Simulation<dim>::speed_near_interface() const
   {
     // The CFL limit concerns the interface and the filter ramp around it;
-    // far away alpha is saturated and constant.
+    // far away alpha is saturated and constant. A quantile leaves out the
+    // few vertices whose one-step spikes would otherwise set the step.
+    if (scene.time.cfl_speed_quantile < 1)
+      return velocity.norm_quantile_on_interface(alpha.dof_handler(),
+                                                 alpha.alpha(),
+                                                 scene.time.cfl_speed_quantile);
     return velocity.max_norm_near_interface(alpha.dof_handler(),
                                             alpha.alpha(),
                                             0.999 *
@@ -649,6 +654,7 @@ namespace levelsinter
                ++k)
             {
               reject_trial_step();
+              ++summary.shortened_steps;
               dt = std::min(dt, choose_time_step(t));
               compute_interface_velocity(t, dt);
             }

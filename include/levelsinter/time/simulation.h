@@ -61,6 +61,10 @@ namespace levelsinter
       unsigned int max_dofs             = 0;
       double       mean_iterations      = 0;
       unsigned int rejected_steps       = 0; // retried with a smaller dt
+      /** Steps whose velocity was computed again with a smaller dt because
+       *  it came out faster than the CFL step allowed (since this start;
+       *  each costs one more velocity computation). */
+      unsigned int shortened_steps = 0;
       /** Last time the curvature was under-resolved (-1: never; only for
        *  curvature-driven mechanisms). */
       double curvature_under_resolved_until = -1;
