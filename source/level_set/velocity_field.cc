@@ -137,13 +137,13 @@ namespace levelsinter
   }
 
   template <int dim>
-  template <typename CellFilter, typename Visitor>
-  void
-  VelocityField<dim>::for_each_vertex_norm2(const CellFilter &use_cell,
-                                            const Visitor    &visit) const
+  template <typename CellFilter>
+  double
+  VelocityField<dim>::max_norm_over_cells(const CellFilter &use_cell) const
   {
     // Nodal values of each support point are stored component by component;
     // walk the cells so that components of one node are combined.
+    double                               local_max = 0;
     std::vector<types::global_dof_index> indices(finite_element.dofs_per_cell);
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned() && use_cell(cell))
@@ -159,78 +159,14 @@ namespace levelsinter
                     indices[finite_element.component_to_system_index(c, v)]);
                   norm2 += value * value;
                 }
-              visit(norm2);
+              local_max = std::max(local_max, norm2);
             }
         }
-  }
-
-  template <int dim>
-  template <typename CellFilter>
-  double
-  VelocityField<dim>::max_norm_over_cells(const CellFilter &use_cell) const
-  {
-    double local_max = 0;
-    for_each_vertex_norm2(use_cell, [&](const double norm2) {
-      local_max = std::max(local_max, norm2);
-    });
     return std::sqrt(Utilities::MPI::max(local_max, dofs.get_communicator()));
-  }
-
-  template <int dim>
-  template <typename LevelSetVector>
-  double
-  VelocityField<dim>::norm_quantile_on_interface(
-    const DoFHandler<dim> &level_set_dofs,
-    const LevelSetVector  &alpha,
-    const double           quantile) const
-  {
-    std::vector<types::global_dof_index> indices(
-      level_set_dofs.get_fe().dofs_per_cell);
-    const auto cut = [&](const auto &cell) {
-      same_cell(cell, level_set_dofs)->get_dof_indices(indices);
-      bool negative = false, positive = false;
-      for (const auto i : indices)
-        (alpha(i) < 0 ? negative : positive) = true;
-      return negative && positive;
-    };
-    // A histogram of the speeds on [0, max], summed over the processes:
-    // the same counts, hence the same quantile, on any number of ranks.
-    const double largest = max_norm_over_cells(cut);
-    if (largest == 0)
-      return 0;
-    const unsigned int                    n_bins = 1024;
-    std::vector<unsigned long long> counts(n_bins, 0);
-    for_each_vertex_norm2(cut, [&](const double norm2) {
-      const auto bin = static_cast<unsigned int>(
-        std::min<double>(n_bins - 1, std::sqrt(norm2) / largest * n_bins));
-      ++counts[bin];
-    });
-    Utilities::MPI::sum(counts, dofs.get_communicator(), counts);
-    unsigned long long total = 0;
-    for (const auto count : counts)
-      total += count;
-    unsigned long long below = 0;
-    for (unsigned int bin = 0; bin < n_bins; ++bin)
-      {
-        below += counts[bin];
-        if (below >= quantile * total)
-          return largest * (bin + 1) / n_bins;
-      }
-    return largest;
   }
 
   template class VelocityField<2>;
   template class VelocityField<3>;
-  template double
-  VelocityField<2>::norm_quantile_on_interface(
-    const DoFHandler<2> &,
-    const TrilinosWrappers::MPI::Vector &,
-    const double) const;
-  template double
-  VelocityField<3>::norm_quantile_on_interface(
-    const DoFHandler<3> &,
-    const TrilinosWrappers::MPI::Vector &,
-    const double) const;
   template double
   VelocityField<2>::max_norm_near_interface(
     const DoFHandler<2> &,

@@ -38,18 +38,6 @@ namespace levelsinter
                         "disables the CFL limit (then 'Time step' must be "
                         "set).");
       prm.declare_entry(
-        "CFL speed quantile",
-        "1",
-        Patterns::Double(0, 1),
-        "Which interface speed the CFL number applies to. 1: the largest "
-        "speed near the interface (the filter ramp included). q < 1: the "
-        "q-quantile of the speeds at the vertices of the cells the "
-        "interface cuts (e.g. 0.999 lets the fastest 0.1 % of them move "
-        "further than CFL number x h_min in a step). In the coupled "
-        "packings a few vertices at thin necks carry one-step speed "
-        "spikes that would otherwise set the step (doc/validation.md, "
-        "\"Packings: resolution and step\").");
-      prm.declare_entry(
         "Relative time step",
         "0",
         Patterns::Double(0),
@@ -77,7 +65,6 @@ namespace levelsinter
     end_time           = prm.get_double("End time");
     time_step          = prm.get_double("Time step");
     cfl                = prm.get_double("CFL number");
-    cfl_speed_quantile = prm.get_double("CFL speed quantile");
     max_steps          = prm.get_integer("Maximum steps");
     relative_time_step = prm.get_double("Relative time step");
     prm.leave_subsection();
@@ -89,9 +76,6 @@ namespace levelsinter
       fail_entry("Time/CFL number",
                  "a CFL number or a fixed 'Time step' must be given (both "
                  "are 0)");
-    if (cfl_speed_quantile <= 0)
-      fail_entry("Time/CFL speed quantile",
-                 "must lie in (0, 1]: 1 is the largest speed");
     if (relative_time_step > 0 && time_step == 0)
       fail_entry("Time/Time step",
                  "must be positive with a 'Relative time step': it is the "

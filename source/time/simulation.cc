@@ -446,12 +446,7 @@ namespace levelsinter
   Simulation<dim>::speed_near_interface() const
   {
     // The CFL limit concerns the interface and the filter ramp around it;
-    // far away alpha is saturated and constant. A quantile leaves out the
-    // few vertices whose one-step spikes would otherwise set the step.
-    if (scene.time.cfl_speed_quantile < 1)
-      return velocity.norm_quantile_on_interface(alpha.dof_handler(),
-                                                 alpha.alpha(),
-                                                 scene.time.cfl_speed_quantile);
+    // far away alpha is saturated and constant.
     return velocity.max_norm_near_interface(alpha.dof_handler(),
                                             alpha.alpha(),
                                             0.999 *

@@ -108,19 +108,6 @@ namespace levelsinter
                             const LevelSetVector  &alpha,
                             const double           saturation) const;
 
-    /**
-     * The @p quantile (in (0, 1)) of |v| over the vertices of the cells the
-     * interface {alpha = 0} cuts, each cell counting its own vertices, on
-     * all processes: the interface's speed without its fastest few
-     * vertices. Resolved to 1/1024 of the largest of these speeds; 0 when
-     * no cell is cut.
-     */
-    template <typename LevelSetVector>
-    double
-    norm_quantile_on_interface(const DoFHandler<dim> &level_set_dofs,
-                               const LevelSetVector  &alpha,
-                               const double           quantile) const;
-
     const DoFHandler<dim> &
     dof_handler() const
     {
@@ -140,13 +127,6 @@ namespace levelsinter
     }
 
   private:
-    /** visit(|v|^2) at each vertex of each locally owned cell that
-     * @p use_cell accepts. */
-    template <typename CellFilter, typename Visitor>
-    void
-    for_each_vertex_norm2(const CellFilter &use_cell,
-                          const Visitor    &visit) const;
-
     template <typename CellFilter>
     double
     max_norm_over_cells(const CellFilter &use_cell) const;

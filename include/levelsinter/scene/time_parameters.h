@@ -20,9 +20,6 @@ namespace levelsinter
     double       end_time  = 0;
     double       time_step = 0; // 0: from the CFL number
     double       cfl       = 0.5;
-    // The CFL speed: 1 = the largest near the interface, q < 1 = the
-    // q-quantile over the cut cells' vertices.
-    double       cfl_speed_quantile = 1;
     unsigned int max_steps = 0; // 0: unlimited
     // r > 0: the step is max(time_step, r t) (before the caps).
     double relative_time_step = 0;
