@@ -25,6 +25,22 @@ add_test(NAME study_vd_stiffness_h64_2d
     --csv vd_stiffness_h64_2d.csv)
 set_tests_properties(study_vd_stiffness_2d study_vd_stiffness_h64_2d
   PROPERTIES LABELS validation-long)
+# The same limit at h = 1/128 with the interior offset lambda = 3, 4, 5, 6
+# cells (the packings run lambda = 3): how far the limit, measured at 6
+# cells, holds for a smaller offset (doc/validation.md, "Volume diffusion:
+# explicit stability limit").
+foreach(lambda 3 4 5 6)
+  add_test(NAME study_vd_stiffness_lambda${lambda}_2d
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/largest_stable_step.py ${SD_VALIDATE}
+      ${PERTURBED} --levels 5 --rate 5.294117647058823
+      --scheme volume-diffusion-lambda${lambda} --start 1e-5
+      --filter-thickness 0.12 --band-width 0.118 ${VD_CYLINDER}
+      --set "Volume diffusion/Interior offset=${lambda}"
+      --set "Volume diffusion/Time step factor=0"
+      --csv vd_stiffness_lambda${lambda}_2d.csv)
+  set_tests_properties(study_vd_stiffness_lambda${lambda}_2d
+    PROPERTIES LABELS validation-long)
+endforeach()
 
 # --- The xi extension with hanging nodes inside the filter ramp ------------
 # Refined to h = 1/128 only where |d| < 4 h, two levels coarser beyond,
