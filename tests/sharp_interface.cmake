@@ -230,3 +230,37 @@ foreach(level_e_band "4;0.24;0.236" "5;0.12;0.118" "6;0.06;0.059")
   list(APPEND SHARP_STUDIES study_sharp_vd_neck_l${level}_lambda6_2d)
 endforeach()
 set_tests_properties(${SHARP_STUDIES} PROPERTIES LABELS validation-long)
+
+# --- Issue 27, third increment: a pore that closes (doc/validation.md,
+# "Sharp interfaces: a pore that closes") ------------------------------------
+# The hollow cylinder (hollow_cylinder_2d.prm in a box of 0.6, so that
+# a0 / h = 8 at level 4) with the extended pressure and the small-pore rule
+# below one cell ('Viscous flow/Pore closure radius = 1'), to t = 0.24 (the
+# exact closing time is 0.2196). Measured: MEASURED. Limits LIMITS. 1 and 2
+# ranks agree to 1e-7.
+set(SHARP_HOLE_CLOSING ${SHAPES} hollow ${HOLLOW} 4
+  --set "Domain/Upper corner=0.6, 0.6" --set "Time/End time=0.24"
+  ${SHARP_EXTENDED} --set "Viscous flow/Pore closure radius=1")
+ranks_test(sharp_hole_closing_2d COMMAND ${SHARP_HOLE_CLOSING}
+  --max-closing-error CLOSING --max-rate-error RATE
+  --csv sharp_hole_closing_np@np@.csv
+  AGREE sharp_hole_closing_np@np@.csv 1e-7 cpu_time)
+# The driver writes shapes_output/hollow_level4 (as shapes_hollow_cylinder_2d
+# does at its level).
+set_tests_properties(sharp_hole_closing_2d_np1 sharp_hole_closing_2d_np2
+  PROPERTIES RESOURCE_LOCK hollow_output)
+# The study behind it (validation-long): a0 / h = 4, 8, 16 to t = 0.3, the
+# extended pressure with and without the rule and the continuous one.
+foreach(case_args
+    "extended_rule;${SHARP_EXTENDED};--set;Viscous flow/Pore closure radius=1"
+    "extended;${SHARP_EXTENDED}"
+    "continuous;--set;Viscous flow/Pressure space=continuous")
+  list(GET case_args 0 case)
+  list(REMOVE_AT case_args 0)
+  add_test(NAME study_sharp_hole_closing_${case}_2d COMMAND ${SHAPES} hollow
+    ${HOLLOW} 3,4,5 --set "Domain/Upper corner=0.6, 0.6"
+    --set "Time/End time=0.3" ${case_args}
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/sharp_hole_closing_${case}_2d.csv)
+  set_tests_properties(study_sharp_hole_closing_${case}_2d PROPERTIES
+    LABELS validation-long RESOURCE_LOCK hollow_output)
+endforeach()
