@@ -344,12 +344,14 @@ namespace
         const double gamma = scene.materials.surface_tension;
         const double eta   = scene.viscous_flow.solid_viscosity;
         // The hole's own area: the atmosphere in the cells whose centre
-        // lies in a square about the centre that holds the hole and no
-        // cell of the atmosphere outside (b stays above sqrt(b0^2 - a0^2)).
+        // lies within a0 + h/4 of the centre along each axis, which hold
+        // the hole (it only shrinks; at the start its edge lies on cell
+        // faces in the scenes measured) and no atmosphere outside: b stays
+        // above sqrt(b0^2 - a0^2).
         const double parts = std::pow(2., scene.domain.symmetry_planes.size());
-        const double corner = std::sqrt((b0 * b0 - a0 * a0) / 2);
-        const double half_width = (a0 + corner) / 2;
-        if (half_width < a0 + h / 2 || half_width + h / 2 > corner)
+        const double half_width = a0 + h / 4;
+        if (std::sqrt(2.) * (half_width + h / 2) >
+            std::sqrt(b0 * b0 - a0 * a0))
           throw std::runtime_error("the hollow case needs a wall of a few "
                                    "cells between the hole and the outside");
         const Point<dim> centre(g.pores[0][0], g.pores[0][1]);

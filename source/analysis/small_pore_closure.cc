@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 namespace levelsinter
 {
@@ -14,10 +15,12 @@ namespace levelsinter
   SmallPoreClosure<dim>::SmallPoreClosure(
     const std::vector<types::boundary_id> &symmetry_boundaries,
     const BoundingBox<dim>                &box,
+    const LevelSetFilter                  &filter,
     const double                           closure_radius,
     const double                           speed)
     : symmetry_boundaries(symmetry_boundaries)
     , box(box)
+    , filter(filter)
     , closure_radius(closure_radius)
     , speed(speed)
   {}
@@ -43,7 +46,15 @@ namespace levelsinter
         const double whole  = mirrors * pore.volume;
         const double radius = dim == 3 ? std::cbrt(3 * whole / (4 * M_PI)) :
                                          std::sqrt(whole / M_PI);
+        // Its centre: on each symmetry plane it touches (its mirror image
+        // across the plane is the rest of it).
+        Point<dim> centre = pore.centroid;
+        for (const auto b : symmetry_boundaries)
+          if (pore.box_faces & (1u << b))
+            centre[b / 2] = b % 2 == 0 ? box.get_boundary_points().first[b / 2] :
+                                         box.get_boundary_points().second[b / 2];
         seen.push_back({pore.centroid,
+                        centre,
                         pore.open ? std::numeric_limits<double>::infinity() :
                                     radius});
         part_volumes->push_back(pore.volume);
@@ -98,62 +109,60 @@ namespace levelsinter
     if (!any)
       return;
 
-    // Lower alpha by one constant s_i at each such pore's vertices and the
-    // other vertices of their cells, which moves the pore's interface in by
-    // about s_i and keeps alpha's profile there (lowering the pore's
-    // vertices alone, the reinitialisation of the next step would push
-    // the interface out again). s_i by bisection on the pore's volume
-    // (monotone in s_i), from 0 to the pore's largest alpha. A removed
-    // pore's vertices take the mean alpha of the solid vertices of their
-    // cells.
+    // Move each such pore's surface in by s_i as the level set of a round
+    // pore of radius R_i about its centre c_i would move:
+    // alpha - F(R_i - |x - c_i|) + F(R_i - s_i - |x - c_i|), F the
+    // filter. This keeps alpha's profile (lowering the pore's vertices by a
+    // constant, the next step's reinitialisation pushed the surface out
+    // again and the surface measure grew). s_i by bisection on the pore's
+    // volume (monotone in s_i), from 0 to R_i + 3 E; past the filter's reach
+    // alpha is unchanged. A removed pore (s_i = R_i + 3 E) keeps no
+    // positive vertex.
     const IndexSet &relevant = level_set.locally_relevant();
     const MPI_Comm  comm     = level_set.dof_handler().get_communicator();
+    const double    reach    = 3 * filter.thickness();
     TrilinosWrappers::MPI::Vector original(level_set.locally_owned(), comm);
     original = level_set.alpha();
-    std::vector<int>    shifted_by(vertex.size(), -1);
-    std::vector<double> low(now.size(), 0), high(now.size(), 0),
-      ring_sum(now.size(), 0), ring_count(now.size(), 0);
+    std::vector<double> low(now.size(), 0), high(now.size(), 0);
+    for (unsigned int i = 0; i < now.size(); ++i)
+      if (target[i] >= 0)
+        high[i] = now[i].radius + reach;
+    // The owned DoFs in reach of a pore: (DoF, pore, distance).
+    std::vector<std::tuple<types::global_dof_index, unsigned int, double>>
+      near;
     std::vector<types::global_dof_index> indices(
       level_set.fe().n_dofs_per_cell());
+    std::vector<bool> seen(vertex.size(), false);
     for (const auto &cell : level_set.dof_handler().active_cell_iterators())
-      if (!cell->is_artificial())
+      if (cell->is_locally_owned())
         {
           cell->get_dof_indices(indices);
-          int pore = -1;
-          for (const auto dof : indices)
-            if (const int i = vertex[relevant.index_within_set(dof)];
-                i >= 0 && target[i] >= 0)
-              pore = i;
-          if (pore < 0)
-            continue;
-          for (const auto dof : indices)
+          for (const unsigned int v : cell->vertex_indices())
             {
-              const unsigned int k     = relevant.index_within_set(dof);
-              const double       value = level_set.alpha()(dof);
-              if (shifted_by[k] < 0)
-                shifted_by[k] = vertex[k] >= 0 ? vertex[k] : pore;
-              high[pore] = std::max(high[pore], value);
-              if (value <= 0 && cell->is_locally_owned())
-                {
-                  ring_sum[pore] += value;
-                  ring_count[pore] += 1;
-                }
+              const unsigned int k = relevant.index_within_set(indices[v]);
+              if (seen[k] || !level_set.locally_owned().is_element(indices[v]))
+                continue;
+              seen[k] = true;
+              for (unsigned int i = 0; i < now.size(); ++i)
+                if (const double d = cell->vertex(v).distance(now[i].centre);
+                    target[i] >= 0 && d < now[i].radius + reach)
+                  {
+                    near.emplace_back(indices[v], i, d);
+                    break;
+                  }
             }
         }
-    Utilities::MPI::max(high, comm, high);
-    Utilities::MPI::sum(ring_sum, comm, ring_sum);
-    Utilities::MPI::sum(ring_count, comm, ring_count);
     const auto apply = [&](const std::vector<double> &shift) {
       TrilinosWrappers::MPI::Vector shifted(original);
-      for (unsigned int k = 0; k < vertex.size(); ++k)
-        if (const int i = shifted_by[k]; i >= 0)
-          if (const auto dof = relevant.nth_index_in_set(k);
-              level_set.locally_owned().is_element(dof))
-            shifted(dof) =
-              target[i] > 0 ? original(dof) - shift[i] :
-              vertex[k] < 0 ? original(dof) :
-              ring_count[i] > 0 ? ring_sum[i] / ring_count[i] :
-                                  -closure_radius;
+      for (const auto &[dof, i, d] : near)
+        {
+          double value = original(dof) - filter.filter(now[i].radius - d) +
+                         filter.filter(now[i].radius - shift[i] - d);
+          if (target[i] == 0 &&
+              vertex[relevant.index_within_set(dof)] == int(i))
+            value = std::min(value, filter.filter(-closure_radius));
+          shifted(dof) = value;
+        }
       level_set.set_from_owned(shifted);
     };
     // The volume left of pore i: the closed pores whose centroid lies

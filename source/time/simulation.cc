@@ -159,6 +159,7 @@ namespace levelsinter
         auto rule = std::make_unique<SmallPoreClosure<dim>>(
           scene.domain.symmetry_planes,
           BoundingBox<dim>(std::make_pair(lower, upper)),
+          level_set_filter,
           scene.viscous_flow.pore_closure_radius,
           scene.materials.surface_tension /
             (2 * scene.viscous_flow.solid_viscosity));

@@ -6,6 +6,7 @@
 
 #include <levelsinter/analysis/postprocessor.h>
 #include <levelsinter/level_set/level_set_field.h>
+#include <levelsinter/level_set/level_set_filter.h>
 
 #include <string>
 #include <vector>
@@ -21,9 +22,9 @@ namespace levelsinter
    * included) the rule shrinks a closed pore at least as fast as the
    * closing law of a small pore in a viscous body with no load,
    * dr/dt = -gamma / (2 eta_s) (a cylindrical pore in 2D, a spherical one
-   * in 3D alike), by lowering alpha at the pore's vertices by one constant
-   * until its volume is that of the law, and removes it when the law's
-   * radius reaches zero. The solid volume this adds (the pore's volume the
+   * in 3D alike), by moving its surface in as that of a round pore would
+   * move (end_step()) until its volume is that of the law, and removes it
+   * when the law's radius reaches zero. The solid volume this adds (the pore's volume the
    * flow did not remove) is a metrics.csv column, `pore_closure_volume`
    * (cumulative, the part in the box), next to `pores_closed_by_rule`.
    *
@@ -37,6 +38,7 @@ namespace levelsinter
     /** @p closure_radius: in finest cells; @p speed: gamma / (2 eta_s). */
     SmallPoreClosure(const std::vector<types::boundary_id> &symmetry_boundaries,
                      const BoundingBox<dim>                &box,
+                     const LevelSetFilter                  &filter,
                      const double                           closure_radius,
                      const double                           speed);
 
@@ -75,10 +77,12 @@ namespace levelsinter
     }
 
   private:
-    // A closed pore as the rule sees it: the whole pore's radius.
+    // A closed pore as the rule sees it: the centroid of its part in the
+    // box, the whole pore's centre and radius.
     struct Seen
     {
       Point<dim> centroid;
+      Point<dim> centre;
       double     radius;
     };
 
@@ -89,6 +93,7 @@ namespace levelsinter
 
     const std::vector<types::boundary_id> symmetry_boundaries;
     const BoundingBox<dim>                box;
+    const LevelSetFilter                  filter;
     const double                          closure_radius;
     const double                          speed;
     std::vector<Seen>                     at_start;
