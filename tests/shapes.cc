@@ -14,7 +14,8 @@
 //     a viscous hollow cylinder (one particle minus a concentric pore)
 //     closing under surface tension, against the exact Stokes solution
 //     (doc/numerics.md): the wall thickness b - a grows at gamma /
-//     (2 eta_s) while the area stays.
+//     (2 eta_s) while the area stays; the hole's own area (the atmosphere
+//     about its centre) after every step gives the closing time.
 //   shapes holes SCENE.prm LEVELS [options]
 //     a viscous cylinder (one particle) with holes (Pores, Elliptic
 //     pores) closing under surface tension, with the packing analysis on:
@@ -28,7 +29,7 @@
 // --max-area-error, --max-perimeter-error (relative, finest level),
 // --min-area-order, --max-displacement (finest level, / h),
 // --max-projection-error (/ h); hollow: --max-rate-error,
-// --max-radius-error, --max-area-drift; holes: --min-closure-ratio,
+// --max-radius-error, --max-area-drift, --max-closing-error; holes: --min-closure-ratio,
 // --max-closure-ratio (closure estimate), --min-half-time-ratio,
 // --max-half-time-ratio (each hole's time against its single-hole run if
 // there is one, else against the annulus), --min-roundness-at-half,
@@ -314,7 +315,9 @@ namespace
     constexpr int dim     = 2;
     const Options options = study::parse_options(args, 3);
     Table         table({"level", "h", "steps", "cpu_time", "rate_error",
-                         "max_radius_error", "area_drift", "final_a_over_a0"},
+                         "max_radius_error", "area_drift", "final_a_over_a0",
+                         "closing_time", "closing_time_exact",
+                         "closing_error", "pore_closure_volume"},
                 options.csv);
     for (const unsigned int level : study::parse_levels(args.at(2)))
       {
@@ -340,37 +343,83 @@ namespace
         const double b0 = g.particles[0][dim], a0 = g.pores[0][dim];
         const double gamma = scene.materials.surface_tension;
         const double eta   = scene.viscous_flow.solid_viscosity;
+        // The hole's own area: the atmosphere in the cells whose centre
+        // lies within a0 + h/4 of the centre along each axis, which hold
+        // the hole (it only shrinks; at the start its edge lies on cell
+        // faces in the scenes measured) and no atmosphere outside: b stays
+        // above sqrt(b0^2 - a0^2).
+        const double parts = std::pow(2., scene.domain.symmetry_planes.size());
+        const double half_width = a0 + h / 4;
+        if (std::sqrt(2.) * (half_width + h / 2) >
+            std::sqrt(b0 * b0 - a0 * a0))
+          throw std::runtime_error("the hollow case needs a wall of a few "
+                                   "cells between the hole and the outside");
+        const Point<dim> centre(g.pores[0][0], g.pores[0][1]);
+        const Tensor<1, dim> half({half_width, half_width});
+        const BoundingBox<dim> window(
+          std::make_pair(Point<dim>(centre - half), Point<dim>(centre + half)));
+        std::vector<double> hole_time, hole_area;
         Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
         simulation.initialise();
+        const auto observe = [&](const double time,
+                                 const LevelSetField<dim> &alpha) {
+          hole_time.push_back(time);
+          hole_area.push_back(
+            parts * interface_measures::atmosphere_volume(alpha, window));
+        };
+        observe(0, simulation.level_set());
+        simulation.set_step_observer(
+          [&](unsigned int, const double time, const LevelSetField<dim> &alpha) {
+            observe(time, alpha);
+          });
         const auto summary = simulation.run();
 
         const study::CsvTable metrics(directory + "/metrics.csv");
         const auto &t = metrics.column("time");
         const auto &A = metrics.column("solid_volume");
         const auto &P = metrics.column("interface_area");
-        const double parts = std::pow(2., scene.domain.symmetry_planes.size());
         const auto   a_of  = [&](const unsigned int i) {
           const double w = 2 * A[i] / P[i];
           return (parts * P[i] / (2 * M_PI) - w) / 2;
         };
+        // 0 from the closing time on.
         const auto exact_a = [&](const double time) {
           const double w = b0 - a0 + gamma * time / (2 * eta);
-          return ((b0 * b0 - a0 * a0) / w - w) / 2;
+          return std::max(((b0 * b0 - a0 * a0) / w - w) / 2, 0.);
         };
+        const double exact_closing =
+          2 * eta / gamma * (std::sqrt(b0 * b0 - a0 * a0) - (b0 - a0));
+        // The closing time: the hole's radius extrapolated linearly to
+        // zero from the last two samples that hold a hole (the radius
+        // falls linearly near the end; the sample after it has none).
+        double closing = std::numeric_limits<double>::quiet_NaN();
+        for (unsigned int i = 2; i < hole_area.size(); ++i)
+          if (hole_area[i] < 1e-10 * h * h && hole_area[i - 1] >= 1e-10 * h * h)
+            {
+              const double r1 = std::sqrt(hole_area[i - 2] / M_PI),
+                           r2 = std::sqrt(hole_area[i - 1] / M_PI);
+              closing = hole_time[i - 1] + r2 * (hole_time[i - 1] -
+                                                 hole_time[i - 2]) /
+                                             (r1 - r2);
+              break;
+            }
         double max_error = 0;
         std::unique_ptr<study::CsvFile> series;
         if (study::is_root() && !options.csv.empty())
           {
             series = std::make_unique<study::CsvFile>(
               options.csv + ".level" + std::to_string(level) + ".csv");
-            series->stream() << "time,a,a_exact\n";
+            series->stream() << "time,a,a_exact,hole_radius\n";
           }
         for (unsigned int i = 0; i < t.size(); ++i)
           {
             max_error =
               std::max(max_error, std::abs(a_of(i) - exact_a(t[i])) / a0);
             if (series)
-              series->row(t[i], a_of(i), exact_a(t[i]));
+              series->row(t[i],
+                          a_of(i),
+                          exact_a(t[i]),
+                          std::sqrt(std::max(hole_area.at(i), 0.) / M_PI));
           }
         const unsigned int last = t.size() - 1;
         table.add({double(level),
@@ -380,7 +429,13 @@ namespace
                    (a_of(last) - a_of(0)) / (exact_a(t[last]) - a0) - 1,
                    max_error,
                    std::abs(metrics.column("volume_change").back()),
-                   a_of(last) / a0});
+                   a_of(last) / a0,
+                   closing,
+                   exact_closing,
+                   closing / exact_closing - 1,
+                   metrics.has_column("pore_closure_volume") ?
+                     parts * metrics.column("pore_closure_volume").back() :
+                     0.});
       }
     check("finest |mean inner-radius rate / exact - 1|",
           std::abs(table.finest("rate_error")), options, "max-rate-error");
@@ -388,6 +443,10 @@ namespace
           options, "max-radius-error");
     check("finest solid-area drift", table.finest("area_drift"), options,
           "max-area-drift");
+    // NaN (the hole has not closed) fails.
+    check("finest |closing time / exact - 1|",
+          std::abs(table.finest("closing_error")), options,
+          "max-closing-error");
   }
 
   // The concentric annulus b, a0 closing (doc/numerics.md, "Hollow

@@ -230,3 +230,43 @@ foreach(level_e_band "4;0.24;0.236" "5;0.12;0.118" "6;0.06;0.059")
   list(APPEND SHARP_STUDIES study_sharp_vd_neck_l${level}_lambda6_2d)
 endforeach()
 set_tests_properties(${SHARP_STUDIES} PROPERTIES LABELS validation-long)
+
+# --- Issue 27, third increment: a pore that closes (doc/validation.md,
+# "Sharp interfaces: a pore that closes") ------------------------------------
+# The hollow cylinder (hollow_cylinder_2d.prm in a box of 0.6, so that
+# a0 / h = 8 at level 4) with the extended pressure and the small-pore rule
+# below one cell ('Viscous flow/Pore closure radius = 1'), to t = 0.3 (the
+# exact closing time is 0.2196): the case of
+# study_sharp_hole_closing_extended_rule_2d at this level. Measured: closing
+# time 0.22058, +0.44 % (the rule's neglect of the load term adds +0.62 %,
+# scripts/hollow_cylinder_closing.py); without the rule the hole stalls
+# below a cell and does not close by t = 0.3 (NaN fails); mean
+# inner-radius rate -0.11 %. The closing time moves with the steps (to
+# t = 0.24: +1.04 %; doc/validation.md). Limits: the aim, 1 %, and 0.5 %.
+# One rank only: on 2 ranks this case (with or without the rule) stops at
+# t = 0 in ExtendedPressureStokes::assemble (Trilinos error -1 adding a
+# constrained pressure DoF's diagonal, a bug of the extended pressure's
+# pattern or zero-pressure constraints across ranks, not yet found); the
+# 1 vs 2 ranks check waits for its fix.
+ranks_test(sharp_hole_closing_2d RANKS 1 COMMAND ${SHAPES} hollow ${HOLLOW} 4
+  --set "Domain/Upper corner=0.6, 0.6" --set "Time/End time=0.3"
+  ${SHARP_EXTENDED} --set "Viscous flow/Pore closure radius=1"
+  --max-closing-error 0.01 --max-rate-error 0.005)
+# The driver writes shapes_output/hollow_level4 (as the study does).
+set_tests_properties(sharp_hole_closing_2d_np1 PROPERTIES
+  RESOURCE_LOCK hollow_output)
+# The study behind it (validation-long): a0 / h = 4, 8, 16 to t = 0.3, the
+# extended pressure with and without the rule and the continuous one.
+foreach(case_args
+    "extended_rule;${SHARP_EXTENDED};--set;Viscous flow/Pore closure radius=1"
+    "extended;${SHARP_EXTENDED}"
+    "continuous;--set;Viscous flow/Pressure space=continuous")
+  list(GET case_args 0 case)
+  list(REMOVE_AT case_args 0)
+  add_test(NAME study_sharp_hole_closing_${case}_2d COMMAND ${SHAPES} hollow
+    ${HOLLOW} 3,4,5 --set "Domain/Upper corner=0.6, 0.6"
+    --set "Time/End time=0.3" ${case_args}
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/sharp_hole_closing_${case}_2d.csv)
+  set_tests_properties(study_sharp_hole_closing_${case}_2d PROPERTIES
+    LABELS validation-long RESOURCE_LOCK hollow_output)
+endforeach()

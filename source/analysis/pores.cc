@@ -119,7 +119,8 @@ namespace levelsinter
   std::vector<Pore<dim>>
   find_pores(const LevelSetField<dim>              &level_set,
              const std::vector<types::boundary_id> &symmetry_boundaries,
-             const BoundingBox<dim>                &window)
+             const BoundingBox<dim>                &window,
+             std::vector<int>                      *vertex_pores)
   {
     const auto        &dofs     = level_set.dof_handler();
     const IndexSet    &relevant = level_set.locally_relevant();
@@ -279,9 +280,11 @@ namespace levelsinter
       for (std::size_t i = 0; i < part.size(); i += Sums<dim>::size)
         total[part[i]].add(&part[i]);
     std::vector<Pore<dim>> pores;
+    std::vector<double>    labels;
     for (const auto &[l, s] : total)
       if (s.volume > 0)
         {
+          labels.push_back(l);
           Pore<dim> pore;
           pore.volume           = s.volume;
           pore.area             = s.area;
@@ -303,10 +306,28 @@ namespace levelsinter
         k[d] = std::llround(p.centroid[d] / scale);
       return k;
     };
-    std::sort(pores.begin(), pores.end(), [&](const auto &a, const auto &b) {
-      return key(a) < key(b);
+    std::vector<unsigned int> order(pores.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](const auto a, const auto b) {
+      return key(pores[a]) < key(pores[b]);
     });
-    return pores;
+    std::vector<Pore<dim>> sorted;
+    std::map<double, int>  index_of_label;
+    for (const unsigned int i : order)
+      {
+        index_of_label[labels[i]] = sorted.size();
+        sorted.push_back(pores[i]);
+      }
+    if (vertex_pores)
+      {
+        vertex_pores->assign(n, -1);
+        for (unsigned int k = 0; k < n; ++k)
+          if (value[k] > 0)
+            if (const auto found = index_of_label.find(label[sets.find(k)]);
+                found != index_of_label.end())
+              (*vertex_pores)[k] = found->second;
+      }
+    return sorted;
   }
 
   template <int dim>
@@ -359,11 +380,13 @@ namespace levelsinter
   template std::vector<Pore<2>>
   find_pores(const LevelSetField<2> &,
              const std::vector<types::boundary_id> &,
-             const BoundingBox<2> &);
+             const BoundingBox<2> &,
+             std::vector<int> *);
   template std::vector<Pore<3>>
   find_pores(const LevelSetField<3> &,
              const std::vector<types::boundary_id> &,
-             const BoundingBox<3> &);
+             const BoundingBox<3> &,
+             std::vector<int> *);
   template class PoreTracker<2>;
   template class PoreTracker<3>;
 } // namespace levelsinter

@@ -119,6 +119,17 @@ namespace levelsinter
                         "g of the pressure ghost penalty of the extended "
                         "pressure space, g (a2/a1) h^3 [d_n p][d_n q] on the "
                         "faces of cut cells (no unit; doc/numerics.md).");
+      prm.declare_entry("Pore closure radius",
+                        "0",
+                        Patterns::Double(0),
+                        "In finest cells h_min: a closed pore whose radius "
+                        "(of the ball of its volume) is below it closes at "
+                        "least as fast as a small pore in a viscous body, "
+                        "dr/dt = -gamma / (2 eta_s), and is removed when "
+                        "that radius reaches zero; the solid volume this "
+                        "adds is the metrics.csv column "
+                        "pore_closure_volume (doc/numerics.md, 'A pore "
+                        "below a few cells'). 0 (the default): no rule.");
     }
     prm.leave_subsection();
   }
@@ -166,6 +177,7 @@ namespace levelsinter
       {{"continuous", PressureSpace::continuous},
        {"extended", PressureSpace::extended}});
     ghost_penalty = prm.get_double("Ghost penalty");
+    pore_closure_radius = prm.get_double("Pore closure radius");
     prm.leave_subsection();
 
     // The volume-diffusion mechanics reads this section too, enabled or

@@ -148,6 +148,24 @@ namespace levelsinter
         scene.geometry.particles.size() >= 2)
       particle_ids =
         std::make_unique<ParticleIdField<dim>>(scene.geometry.particles);
+    if (scene.viscous_flow.enabled && scene.viscous_flow.pore_closure_radius > 0)
+      {
+        Point<dim> lower, upper;
+        for (unsigned int d = 0; d < dim; ++d)
+          {
+            lower[d] = scene.domain.lower_corner[d];
+            upper[d] = scene.domain.upper_corner[d];
+          }
+        auto rule = std::make_unique<SmallPoreClosure<dim>>(
+          scene.domain.symmetry_planes,
+          BoundingBox<dim>(std::make_pair(lower, upper)),
+          level_set_filter,
+          scene.viscous_flow.pore_closure_radius,
+          scene.materials.surface_tension /
+            (2 * scene.viscous_flow.solid_viscosity));
+        small_pores = rule.get();
+        postprocessors.push_back(std::move(rule));
+      }
   }
 
   template <int dim>
@@ -639,6 +657,8 @@ namespace levelsinter
     for (unsigned int retry = 0;; ++retry)
       try
         {
+          if (small_pores)
+            small_pores->begin_step(alpha);
           // dt comes from the velocity of the previous step; if this
           // step's velocity is much faster, the step is chosen again.
           compute_interface_velocity(t, dt);
@@ -657,6 +677,8 @@ namespace levelsinter
           for (auto &mechanism : mechanisms)
             mechanism->check_step(alpha);
           last_iterations += correct_step(dt);
+          if (small_pores)
+            small_pores->end_step(alpha, dt, h_min);
           for (auto &mechanism : mechanisms)
             mechanism->accept_step(alpha);
           return dt;

@@ -78,12 +78,16 @@ namespace levelsinter
    * component crosses).
    *
    * @p window: volume_in_window counts the cells whose centre lies in it.
+   * @p vertex_pores, if given, receives for each locally relevant DoF of
+   * the level set (in the order of locally_relevant()) the index in the
+   * returned list of the pore it belongs to, -1 where alpha <= 0.
    */
   template <int dim>
   std::vector<Pore<dim>>
   find_pores(const LevelSetField<dim>              &level_set,
              const std::vector<types::boundary_id> &symmetry_boundaries,
-             const BoundingBox<dim>                &window);
+             const BoundingBox<dim>                &window,
+             std::vector<int> *vertex_pores = nullptr);
 
   /**
    * Follows the closed pores from one call to the next: a closed pore keeps

@@ -55,5 +55,6 @@ namespace levelsinter
     double       capillary_time_step_factor = 1;
     PressureSpace pressure_space            = PressureSpace::continuous;
     double        ghost_penalty             = 0.1;
+    double        pore_closure_radius       = 0; // in h_min; 0: no rule
   };
 } // namespace levelsinter

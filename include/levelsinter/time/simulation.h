@@ -7,6 +7,7 @@
 
 #include <levelsinter/analysis/particle_id_field.h>
 #include <levelsinter/analysis/postprocessor.h>
+#include <levelsinter/analysis/small_pore_closure.h>
 #include <levelsinter/grid/interface_band_refinement.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
@@ -252,5 +253,8 @@ namespace levelsinter
     RemainingTime                             remaining_time;
     std::function<void(unsigned int, double, const LevelSetField<dim> &)>
       step_observer;
+    // 'Viscous flow/Pore closure radius' > 0: the rule, one of the
+    // postprocessors (its metrics columns and restart state).
+    SmallPoreClosure<dim> *small_pores = nullptr;
   };
 } // namespace levelsinter
