@@ -223,8 +223,10 @@ grains_check(grains_equilibrium_2d_initial grains_equilibrium_2d initial
   grains_equilibrium_2d 0.25 1 1e-3)
 # The end state against the exact equilibrium (t = 0.01, R/h = 16 and 32,
 # gamma_gb / gamma_s = 0.5 and 1; kernel l = 6 h): studies, 5-100 s CPU per
-# run, not yet within the issue's 1 % (doc/validation.md).
-foreach(case "4;0.094;0.062;16;1" "5;0.047;0.031;32;1" "4;0.094;0.062;16;0.5")
+# run, not yet within the issue's 1 % (doc/validation.md; R/h = 32 at 0.5
+# added in the third increment).
+foreach(case "4;0.094;0.062;16;1" "5;0.047;0.031;32;1" "4;0.094;0.062;16;0.5"
+    "5;0.047;0.031;32;0.5")
   list(GET case 0 level)
   list(GET case 1 filter)
   list(GET case 2 band)
@@ -253,7 +255,8 @@ endforeach()
 # session's load): measured largest relative difference 5.8e-9, limit
 # 1e-6. The grains approach by 4.36e-3 (grain_centre_distance_change_mean),
 # |volume_change| 1.03e-4 (the volume correction), grain_volume_change_max
-# 2.8e-3 (the partition moves matter between grains, doc/validation.md);
+# 2.5e-3 (2.8e-3 before the ramp split of grain_volumes(); the partition
+# moves matter between grains, doc/validation.md "Volume per grain");
 # limits 3e-3, 2e-4, 5e-3.
 ranks_agree(grains_packing_27_3d grains_packing_27_3d
   ${GRAIN_SCENES}/grains_packing_27_3d.prm 1e-6
