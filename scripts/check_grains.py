@@ -42,6 +42,10 @@ if a check fails.
       circle fitted to each grain), the grain-boundary radius, the fitted
       circles' centre distance and the dihedral angle, measured and exact;
       with --csv the table over the run.
+  check_grains.py conserved RUN TOLERANCE
+      every grain keeps its share of the solid: at every row of
+      metrics.csv grain_volume_change_max exceeds |volume_change| (each
+      grain's volume may follow the solid's) by at most TOLERANCE.
   check_grains.py initial RUN R TOLERANCE_DEGREES RELATIVE_TOLERANCE
       step 0 of grain_boundaries.csv (two overlapping circles of radius
       R): the dihedral angle where the circles meet, cos(psi/2) = d / (2
@@ -95,6 +99,17 @@ def densify(run, min_approach, max_volume, max_grain):
         fail(f"approach {approach:.4g} < {min_approach}")
     if volume > max_volume or grain > max_grain:
         fail("solid or grain volume not conserved")
+
+
+def conserved(run, tolerance):
+    metrics = rows(run + "/metrics.csv")
+    excess = max(r["grain_volume_change_max"] - abs(r["volume_change"])
+                 for r in metrics)
+    print(f"conserved: largest grain_volume_change_max - |volume_change| "
+          f"{excess:.3g} over {len(metrics)} rows")
+    if excess > tolerance:
+        fail(f"a grain's volume moved by {excess:.3g} beyond the solid's "
+             f"(limit {tolerance})")
 
 
 def centroids(run, reference, tolerance, volume_limit):
@@ -254,6 +269,8 @@ if __name__ == "__main__":
     elif mode == "equilibrium":
         equilibrium(args[0], float(args[1]), int(args[2]),
                     args[4] if len(args) > 4 and args[3] == "--csv" else None)
+    elif mode == "conserved":
+        conserved(args[0], float(args[1]))
     elif mode == "initial":
         initial(args[0], *map(float, args[1:4]))
     elif mode == "same":

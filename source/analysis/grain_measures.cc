@@ -125,8 +125,8 @@ namespace levelsinter
     const PowerCells<dim> cells = grains.grains();
     const unsigned int    n     = centres.size();
 
-    // Each grain's solid, point by point where a cell boundary crosses a
-    // mesh cell, and the solid in the box the centres span.
+    // Each grain's solid (grain_geometry::grain_volumes) and, once, the
+    // solid in the box the centres span.
     Point<dim> low = centres[0], high = centres[0];
     for (const auto &c : centres)
       for (unsigned int d = 0; d < dim; ++d)
@@ -156,18 +156,15 @@ namespace levelsinter
       return &moments[(((b * 2 + whole) * 2 + side) * 2 + end) * n_moments];
     };
     interface_measures::RegionIntegrands<dim> integrands;
-    integrands.solid_flags = update_JxW_values | update_quadrature_points;
-    integrands.on_solid    = [&](const auto &cell, const auto &values) {
-      cells.candidates(cell->center(), cell->diameter() / 2, near);
-      for (const unsigned int q : values.quadrature_point_indices())
-        {
-          const Point<dim> &x   = values.quadrature_point(q);
-          const double      JxW = alpha.measure().JxW(values, q);
-          volume[cells.owner(x, near)] += JxW;
-          if (box_has_volume && first && box.point_inside(x))
-            volume[n] += JxW;
-        }
-    };
+    if (box_has_volume && first)
+      {
+        integrands.solid_flags = update_JxW_values | update_quadrature_points;
+        integrands.on_solid    = [&](const auto &, const auto &values) {
+          for (const unsigned int q : values.quadrature_point_indices())
+            if (box.point_inside(values.quadrature_point(q)))
+              volume[n] += alpha.measure().JxW(values, q);
+        };
+      }
     integrands.surface_flags = update_JxW_values | update_quadrature_points;
     integrands.on_surface    = [&](const auto &cell, const auto &values) {
       cells.candidates(cell->center(), cell->diameter() / 2, near);
@@ -209,6 +206,9 @@ namespace levelsinter
     };
     interface_measures::integrate_regions(alpha, integrands);
     Utilities::MPI::sum(volume, comm, volume);
+    const std::vector<double> grain_volume =
+      grain_geometry::grain_volumes(alpha, cells);
+    std::copy(grain_volume.begin(), grain_volume.end(), volume.begin());
     Utilities::MPI::sum(moments, comm, moments);
     double solid = 0;
     for (unsigned int i = 0; i < n; ++i)

@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <levelsinter/geometry/grain_boundaries.h>
 #include <levelsinter/level_set/interface_measures.h>
 
@@ -192,6 +194,90 @@ namespace levelsinter::grain_geometry
 
   template <int dim>
   void
+  grain_shares(const PowerCells<dim>           &grains,
+               const Point<dim>                &x,
+               const std::vector<unsigned int> &near,
+               const double                     width,
+               std::vector<double>             &share)
+  {
+    const auto &c = grains.centres();
+    share.assign(near.size(), 1.);
+    double sum = 0;
+    for (unsigned int a = 0; a < near.size(); ++a)
+      {
+        for (unsigned int b = 0; b < near.size() && share[a] > 0; ++b)
+          if (b != a)
+            {
+              // The powers' difference is affine in x, with the gradient
+              // 2 (c_l - c_k): over that norm, the distance from the plane.
+              const unsigned int k = near[a], l = near[b];
+              const double       s = (grains.power(x, l) - grains.power(x, k)) /
+                                     (2 * c[k].distance(c[l]));
+              share[a] *= std::clamp(0.5 + s / width, 0., 1.);
+            }
+        sum += share[a];
+      }
+    // The owner's share is positive (every s_kl >= 0 for it).
+    for (double &v : share)
+      v /= sum;
+  }
+
+  template <int dim>
+  std::vector<double>
+  grain_volumes(const LevelSetField<dim> &level_set,
+                const PowerCells<dim>    &grains,
+                FullMatrix<double>       *jacobian)
+  {
+    const auto               &c = grains.centres();
+    const unsigned int        n = c.size();
+    std::vector<double>       volume(n, 0.);
+    std::vector<unsigned int> near;
+    std::vector<double>       share;
+    if (jacobian)
+      jacobian->reinit(n, n);
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.solid_flags = update_JxW_values | update_quadrature_points;
+    integrands.on_solid    = [&](const auto &cell, const auto &values) {
+      const double width = cell->minimum_vertex_distance();
+      grains.candidates(cell->center(), cell->diameter() / 2 + width, near);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          const Point<dim> &x   = values.quadrature_point(q);
+          const double      JxW = level_set.measure().JxW(values, q);
+          grain_shares(grains, x, near, width, share);
+          for (unsigned int a = 0; a < near.size(); ++a)
+            volume[near[a]] += share[a] * JxW;
+          // Within the ramp of (k, l) the share of k grows by 1 / (2 d_kl
+          // width) per unit of w_k.
+          if (jacobian)
+            for (unsigned int a = 0; a < near.size(); ++a)
+              for (unsigned int b = a + 1; b < near.size(); ++b)
+                {
+                  const unsigned int k = near[a], l = near[b];
+                  const double       d = c[k].distance(c[l]);
+                  const double s = (grains.power(x, l) - grains.power(x, k)) /
+                                   (2 * d);
+                  if (share[a] > 0 && share[b] > 0 && std::abs(s) < width / 2)
+                    {
+                      const double slope = JxW / (2 * d * width);
+                      (*jacobian)(k, k) += slope;
+                      (*jacobian)(l, l) += slope;
+                      (*jacobian)(k, l) -= slope;
+                      (*jacobian)(l, k) -= slope;
+                    }
+                }
+        }
+    };
+    interface_measures::integrate_regions(level_set, integrands);
+    const MPI_Comm comm = level_set.dof_handler().get_communicator();
+    Utilities::MPI::sum(volume, comm, volume);
+    if (jacobian)
+      Utilities::MPI::sum(*jacobian, comm, *jacobian);
+    return volume;
+  }
+
+  template <int dim>
+  void
   cell_grains(const LevelSetField<dim> &level_set,
               const PowerCells<dim>    &grains,
               dealii::Vector<float>    &grain_id,
@@ -231,6 +317,26 @@ namespace levelsinter::grain_geometry
   triple_line_weight(const GrainBoundary<2> &, const Point<2> &, const double);
   template double
   triple_line_weight(const GrainBoundary<3> &, const Point<3> &, const double);
+  template void
+  grain_shares(const PowerCells<2> &,
+               const Point<2> &,
+               const std::vector<unsigned int> &,
+               const double,
+               std::vector<double> &);
+  template void
+  grain_shares(const PowerCells<3> &,
+               const Point<3> &,
+               const std::vector<unsigned int> &,
+               const double,
+               std::vector<double> &);
+  template std::vector<double>
+  grain_volumes(const LevelSetField<2> &,
+                const PowerCells<2> &,
+                FullMatrix<double> *);
+  template std::vector<double>
+  grain_volumes(const LevelSetField<3> &,
+                const PowerCells<3> &,
+                FullMatrix<double> *);
   template void
   cell_grains(const LevelSetField<2> &,
               const PowerCells<2> &,

@@ -10,11 +10,42 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 
 namespace levelsinter
 {
+  namespace
+  {
+    // The solution of matrix x = rhs with no component in the matrix's
+    // null space (singular values below 1e-10 of the largest count as
+    // zero), by the singular-value decomposition.
+    dealii::Vector<double>
+    minimum_norm_solution(LAPACKFullMatrix<double>     &matrix,
+                          const dealii::Vector<double> &rhs)
+    {
+      const unsigned int n = rhs.size();
+      matrix.compute_svd();
+      const auto            &u     = matrix.get_svd_u();
+      const auto            &vt    = matrix.get_svd_vt();
+      const double           s_max = matrix.singular_value(0);
+      dealii::Vector<double> x(n);
+      for (unsigned int k = 0; k < n; ++k)
+        {
+          const double s = matrix.singular_value(k);
+          if (!(s > 1e-10 * s_max))
+            break;
+          double projection = 0;
+          for (unsigned int r = 0; r < n; ++r)
+            projection += u(r, k) * rhs(r);
+          for (unsigned int r = 0; r < n; ++r)
+            x(r) += projection / s * vt(k, r);
+        }
+      return x;
+    }
+  } // namespace
+
   template <int dim>
   GrainBoundaryDiffusion<dim>::GrainBoundaryDiffusion(
     const GrainBoundaryParameters          &parameters,
@@ -36,6 +67,7 @@ namespace levelsinter
         radii.push_back(p[dim]);
       }
     trial_velocity.resize(centre.size());
+    weight_shift.resize(centre.size(), 0.);
     if (parameters.triple_line && parameters.energy_ratio > 0)
       surface_diffusion.set_potential_source(
         [this](const LevelSetField<dim> &alpha, auto &mu) {
@@ -51,7 +83,7 @@ namespace levelsinter
     for (unsigned int i = 0; i < centre.size(); ++i)
       {
         std::vector<double> row(centre[i].begin_raw(), centre[i].end_raw());
-        row.push_back(radii[i]);
+        row.push_back(std::sqrt(radii[i] * radii[i] + weight_shift[i]));
         rows.push_back(row);
       }
     return PowerCells<dim>(rows);
@@ -186,6 +218,9 @@ namespace levelsinter
   GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha)
   {
     TimerOutput::Scope scope(timer, "grain-boundary diffusion");
+    // The volumes balance_volumes() keeps: those of t = 0.
+    if (parameters.conserve_volumes && initial_volume.empty())
+      initial_volume = grain_geometry::grain_volumes(alpha, grains());
     if (!boundaries_current)
       find_boundaries(alpha);
     boundaries_current = false;
@@ -259,25 +294,9 @@ namespace levelsinter
           }
       }
     // The minimum-norm solution: no component in the null space (each
-    // cluster's rigid translation, the grains without contact). Singular
-    // values below 1e-10 of the largest count as zero (a contact whose
-    // G = pi a^4 / 8 is that much smaller is one just forming).
-    matrix.compute_svd();
-    const auto            &u  = matrix.get_svd_u();
-    const auto            &vt = matrix.get_svd_vt();
-    const double           s_max = matrix.singular_value(0);
-    dealii::Vector<double> x(dim * n);
-    for (unsigned int k = 0; k < dim * n; ++k)
-      {
-        const double s = matrix.singular_value(k);
-        if (!(s > 1e-10 * s_max))
-          break;
-        double projection = 0;
-        for (unsigned int r = 0; r < dim * n; ++r)
-          projection += u(r, k) * rhs(r);
-        for (unsigned int r = 0; r < dim * n; ++r)
-          x(r) += projection / s * vt(k, r);
-      }
+    // cluster's rigid translation, the grains without contact); a contact
+    // whose G = pi a^4 / 8 is 1e-10 of the largest is one just forming.
+    const dealii::Vector<double> x = minimum_norm_solution(matrix, rhs);
     for (unsigned int i = 0; i < n; ++i)
       for (unsigned int p = 0; p < dim; ++p)
         trial_velocity[i][p] = mobility * x(i * dim + p);
@@ -359,10 +378,51 @@ namespace levelsinter
 
   template <int dim>
   void
-  GrainBoundaryDiffusion<dim>::accept_step(const LevelSetField<dim> &)
+  GrainBoundaryDiffusion<dim>::accept_step(const LevelSetField<dim> &alpha)
   {
     for (unsigned int i = 0; i < centre.size(); ++i)
       centre[i] += trial_dt * trial_velocity[i];
+    if (parameters.conserve_volumes)
+      balance_volumes(alpha);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::balance_volumes(const LevelSetField<dim> &alpha)
+  {
+    TimerOutput::Scope scope(timer, "grain-boundary diffusion");
+    const unsigned int n = centre.size();
+    // Newton on V_i(w) = V_i(0) V / V(0) (V the solid's volume, which the
+    // volume correction holds), with the derivatives of the measured
+    // volumes (raising w_i moves the plane of (i, j) towards j by dw_i /
+    // (2 d_ij)). Each cluster's total is the solid's, not the weights':
+    // the minimum-norm solution leaves it. Up to 5 iterations, to 1e-6 of
+    // each grain's volume.
+    for (unsigned int iteration = 0; iteration < 5; ++iteration)
+      {
+        FullMatrix<double> derivatives;
+        const auto         volume =
+          grain_geometry::grain_volumes(alpha, grains(), &derivatives);
+        const double ratio =
+          std::accumulate(volume.begin(), volume.end(), 0.) /
+          std::accumulate(initial_volume.begin(), initial_volume.end(), 0.);
+        dealii::Vector<double> residual(n);
+        double                 largest = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            residual(i) = ratio * initial_volume[i] - volume[i];
+            largest =
+              std::max(largest, std::abs(residual(i)) / initial_volume[i]);
+          }
+        if (largest < 1e-6)
+          return;
+        LAPACKFullMatrix<double> jacobian(n, n);
+        jacobian = derivatives;
+        const dealii::Vector<double> dw =
+          minimum_norm_solution(jacobian, residual);
+        for (unsigned int i = 0; i < n; ++i)
+          weight_shift[i] += dw(i);
+      }
   }
 
   template <int dim>
@@ -383,6 +443,9 @@ namespace levelsinter
     for (const auto &c : centre)
       for (unsigned int d = 0; d < dim; ++d)
         out << ' ' << c[d];
+    out << ' ' << initial_volume.size();
+    for (unsigned int i = 0; i < initial_volume.size(); ++i)
+      out << ' ' << initial_volume[i] << ' ' << weight_shift[i];
     return out.str();
   }
 
@@ -404,6 +467,18 @@ namespace levelsinter
     if (!in)
       throw std::runtime_error("the grains' state in the checkpoint is "
                                "incomplete");
+    // Checkpoints written before `Conserve grain volumes` end here.
+    if (std::size_t n_volumes = 0; in >> n_volumes)
+      {
+        if (n_volumes != 0 && n_volumes != n)
+          n_volumes = 0, in.setstate(std::ios::failbit);
+        initial_volume.resize(n_volumes);
+        for (std::size_t i = 0; i < n_volumes; ++i)
+          in >> initial_volume[i] >> weight_shift[i];
+        if (!in)
+          throw std::runtime_error("the grains' volumes in the checkpoint "
+                                   "are incomplete");
+      }
   }
 
   template <int dim>

@@ -57,6 +57,15 @@ namespace levelsinter
                         "(doc/numerics.md, \"The dihedral angle at the "
                         "triple line\"), and the neck root's curvature of "
                         "the contact law is that potential.");
+      prm.declare_entry("Conserve grain volumes",
+                        "false",
+                        Patterns::Bool(),
+                        "After each step the power cells' weights are "
+                        "corrected so that every grain keeps its volume at "
+                        "t = 0 (times the solid's volume ratio): the grain "
+                        "boundaries move by what surface diffusion and the "
+                        "deposition carry across them (doc/numerics.md, "
+                        "\"Volume per grain\").");
     }
     prm.leave_subsection();
   }
@@ -71,6 +80,7 @@ namespace levelsinter
     sliding_resistance = prm.get_double("Sliding resistance");
     deposition_width   = prm.get_double("Deposition width");
     triple_line        = prm.get_bool("Triple-line condition");
+    conserve_volumes   = prm.get_bool("Conserve grain volumes");
     prm.leave_subsection();
     if (!enabled)
       return;

@@ -3,6 +3,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <levelsinter/geometry/power_cells.h>
@@ -75,6 +76,36 @@ namespace levelsinter
     triple_line_weight(const GrainBoundary<dim> &boundary,
                        const Point<dim>         &x,
                        const double              width);
+
+    /**
+     * The shares of the point @p x among the grains @p near (PowerCells::
+     * candidates, owner first): grain k's share is the product over the
+     * others l of min(1, max(0, 1/2 + s_kl / @p width)), s_kl the distance
+     * of x from the plane of (k, l) on k's side, normalised to sum 1. A
+     * point that changes owner would move its whole quadrature weight
+     * between grains; with the ramp a grain's volume changes smoothly as
+     * the planes move, and a point on a plane is shared half and half.
+     */
+    template <int dim>
+    void
+    grain_shares(const PowerCells<dim>           &grains,
+                 const Point<dim>                &x,
+                 const std::vector<unsigned int> &near,
+                 const double                     width,
+                 std::vector<double>             &share);
+
+    /**
+     * Each grain's solid volume (area in 2D; axisymmetric: per radian):
+     * the cut-cell quadrature of the solid split by grain_shares() with the
+     * width of each mesh cell. With @p jacobian, also the derivatives
+     * dV_i / dw_j of these volumes in the weights (w_i = r_i^2), from the
+     * ramps of pairs (exact where two grains meet). Collective.
+     */
+    template <int dim>
+    std::vector<double>
+    grain_volumes(const LevelSetField<dim> &level_set,
+                  const PowerCells<dim>    &grains,
+                  FullMatrix<double>       *jacobian = nullptr);
 
     /**
      * Per cell of the level set's mesh (active cell index; locally owned

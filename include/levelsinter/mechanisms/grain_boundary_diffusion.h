@@ -58,7 +58,11 @@ namespace levelsinter
                        const double              t,
                        VelocityField<dim>       &velocity) override;
 
-    /** The centres move by the trial's velocities times its dt. */
+    /**
+     * The centres move by the trial's velocities times its dt; with
+     * `Conserve grain volumes` the weights are then corrected
+     * (balance_volumes()).
+     */
     void
     accept_step(const LevelSetField<dim> &alpha) override;
 
@@ -69,7 +73,7 @@ namespace levelsinter
     double
     time_step_limit(const LevelSetField<dim> &alpha) const override;
 
-    /** The centres and the velocities of the last accepted step. */
+    /** The centres, weights and volumes at t = 0 of the grains. */
     std::string
     save() const override;
 
@@ -151,6 +155,9 @@ namespace levelsinter
     void
     solve_grain_velocities();
 
+    void
+    balance_volumes(const LevelSetField<dim> &alpha);
+
     // The rigid velocities and the deposition at the nodes, added to
     // @p velocity.
     void
@@ -163,6 +170,9 @@ namespace levelsinter
     const SurfaceDiffusion<dim>  &surface_diffusion;
     TimerOutput                  &timer;
     std::vector<double>           radii;
+    // The power cells' weights are r_i^2 + weight_shift[i].
+    std::vector<double>           weight_shift;
+    std::vector<double>           initial_volume;
     std::vector<Point<dim>>       centre;
     std::vector<Tensor<1, dim>>   trial_velocity;
     double                        trial_dt = 0;

@@ -43,5 +43,6 @@ namespace levelsinter
     double sliding_resistance = 1; // beta
     double deposition_width   = 2; // l in finest cells
     bool   triple_line        = false; // the dihedral angle in surface diffusion
+    bool   conserve_volumes   = false; // planes moved to keep each grain's volume
   };
 } // namespace levelsinter
