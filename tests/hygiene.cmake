@@ -96,3 +96,19 @@ target_link_libraries(remaining_time_test levelsinter_lib)
 deal_ii_setup_target(remaining_time_test)
 add_test(NAME remaining_time COMMAND remaining_time_test
   ${CMAKE_CURRENT_SOURCE_DIR}/scenes/two_cylinders_2d_steps.csv)
+
+# The done line counts the steps whose velocity was computed again with a
+# shorter step. tests/scenes/translation_2d.prm with a speed that jumps
+# from U to 10 U at t = 0.02: the first step after the jump finds the
+# velocity 10x faster than its CFL step (from U) allows, so it is computed
+# again with the step of 10 U, once; the steps after it start from 10 U.
+# Measured: 3 + 26 steps to t = 0.04, one computed again.
+add_test(NAME done_line_counts_shortened_steps
+  COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Velocity/Expression=U*(t < 0.02 ? 1 : 10); 0"
+    --set "Velocity/Expression constants=U=1" --set "Time/End time=0.04"
+    --set "Output/Directory=done_line_counts_shortened_steps"
+    ${CMAKE_CURRENT_SOURCE_DIR}/scenes/translation_2d.prm)
+set_tests_properties(done_line_counts_shortened_steps PROPERTIES
+  PASS_REGULAR_EXPRESSION
+  "done: 29 steps to t = 0.04 .*; 1 step\\(s\\) computed again")
