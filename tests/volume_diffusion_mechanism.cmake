@@ -60,3 +60,32 @@ add_test(NAME volume_diffusion_cylinder_mode2_2d COMMAND ${SD_VALIDATE}
   mullins ${PERTURBED} 5 20 --time-fraction 0.5 --filter-thickness 0.12
   --band-width 0.118 ${VD_CYLINDER} --max-rate-error 0.06
   --max-volume-change 3e-4)
+
+# A step taken again shorter keeps the elastic solve (VolumeDiffusion::
+# shorten_step(): with Delta u = dt v the elastic pressure does not depend
+# on dt). The two grains with a translation that jumps from 0 to 30 (about
+# 20x the diffusion speed) at t = 0.004: 14 steps to t = 0.0052, 2 of them
+# computed again; 15 elastic solves (the steps and the first step's speed
+# probe), where recomputing took 17. Against the recomputing build
+# (7890ab4, tests/reference/vd_shortened_step_2d_metrics.csv) the metrics
+# agree to 5.9e-5 (the largest speed; the neck 1.8e-5), checked at 2e-4;
+# not compared: the volume change and correction speed (differences of
+# nearly equal volumes, 1.4e-3 and 1.6e-3 relative of values near 1e-6),
+# the neck curvature (a second derivative, 1.2e-3), times and iterations.
+add_test(NAME volume_diffusion_shortened_step_keeps_solve
+  COMMAND ${CMAKE_COMMAND}
+    "-DCOMMAND=$<TARGET_FILE:levelsinter>;--overwrite;${VD_GRAINS};--set;Velocity/Type=expression;--set;Velocity/Expression=U*(t < 0.004 ? 0 : 1)\\; 0;--set;Velocity/Expression constants=U=30;--set;Time/End time=0.0052;--set;Output/Field formats=none;--set;Output/Directory=vd_shortened_step"
+    "-DOUTPUT=done: 14 steps.*2 step\\(s\\) computed again"
+    -DDIRECTORY=vd_shortened_step
+    "-DSECTION=volume diffusion: elastic solve" -DCALLS=15
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/timer_calls.cmake)
+set_tests_properties(volume_diffusion_shortened_step_keeps_solve PROPERTIES
+  FIXTURES_SETUP vd_shortened_step)
+add_test(NAME volume_diffusion_shortened_step_unchanged
+  COMMAND compare_metrics vd_shortened_step/metrics.csv
+    ${CMAKE_CURRENT_SOURCE_DIR}/reference/vd_shortened_step_2d_metrics.csv
+    2e-4 ${TIMING_COLUMNS} transport_iterations volume_change
+    volume_correction_speed neck_curvature
+    volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)
+set_tests_properties(volume_diffusion_shortened_step_unchanged PROPERTIES
+  FIXTURES_REQUIRED vd_shortened_step)

@@ -115,7 +115,23 @@ namespace levelsinter
   void
   VolumeDiffusion<dim>::accept_step(const LevelSetField<dim> &)
   {
-    operator_->advance_displacement(trial_step);
+    // Delta u = dt v of the solve the step used, also when a shorter step
+    // kept it (shorten_step()).
+    operator_->advance_displacement(solved_step);
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::reject_step()
+  {
+    keep_solve = false;
+  }
+
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::shorten_step()
+  {
+    keep_solve = phases->pressure_independent_of_step();
   }
 
   template <int dim>
@@ -133,8 +149,13 @@ namespace levelsinter
                                      const double              dt,
                                      VelocityField<dim>       &velocity)
   {
-    trial_step = dt * seconds_per_time_unit;
-    solve_velocity(alpha, t, trial_step, velocity);
+    if (!keep_solve)
+      {
+        solved_step = dt * seconds_per_time_unit;
+        solve(alpha, t, solved_step);
+      }
+    keep_solve = false;
+    add_diffusion_velocity(alpha, velocity);
   }
 
   template <int dim>
@@ -143,15 +164,16 @@ namespace levelsinter
                                            const double              t,
                                            VelocityField<dim> &velocity)
   {
-    solve_velocity(alpha, t, probe_step, velocity);
+    keep_solve = false;
+    solve(alpha, t, probe_step);
+    add_diffusion_velocity(alpha, velocity);
   }
 
   template <int dim>
   void
-  VolumeDiffusion<dim>::solve_velocity(const LevelSetField<dim> &alpha,
-                                       const double              t,
-                                       const double              step_seconds,
-                                       VelocityField<dim>       &velocity)
+  VolumeDiffusion<dim>::solve(const LevelSetField<dim> &alpha,
+                              const double              t,
+                              const double              step_seconds)
   {
     phases->set_time_step(step_seconds);
     {
@@ -185,7 +207,14 @@ namespace levelsinter
                     << "or lower 'Volume diffusion/Interior offset')"
                     << std::endl;
       }
+  }
 
+  template <int dim>
+  void
+  VolumeDiffusion<dim>::add_diffusion_velocity(
+    const LevelSetField<dim> &alpha,
+    VelocityField<dim>       &velocity) const
+  {
     TimerOutput::Scope scope(timer, "volume diffusion velocity");
     // Eq. 112 at each level-set node.
     velocity.add_vertex_values(alpha.dof_handler(),

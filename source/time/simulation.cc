@@ -509,6 +509,14 @@ namespace levelsinter
   }
 
   template <int dim>
+  void
+  Simulation<dim>::shorten_trial_step()
+  {
+    for (auto &mechanism : mechanisms)
+      mechanism->shorten_step();
+  }
+
+  template <int dim>
   unsigned int
   Simulation<dim>::correct_step(const double dt)
   {
@@ -668,7 +676,7 @@ namespace levelsinter
                                    k < 5;
                ++k)
             {
-              reject_trial_step();
+              shorten_trial_step();
               ++summary.shortened_steps;
               dt = std::min(dt, choose_time_step(t));
               compute_interface_velocity(t, dt);

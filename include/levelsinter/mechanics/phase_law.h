@@ -133,6 +133,15 @@ namespace levelsinter
     virtual void
     set_time_step(const double)
     {}
+
+    /** Whether the pressure of a solve stays the same when only the step
+     * changes, so that a step taken again shorter from the same state may
+     * keep it (VolumeDiffusion::shorten_step()). */
+    virtual bool
+    pressure_independent_of_step() const
+    {
+      return false;
+    }
   };
 
   /**
@@ -166,6 +175,13 @@ namespace levelsinter
       k.a2              = 1;
       k.compressibility = c * f.bulk_fluid / eta_f;
       return k;
+    }
+
+    /** Stokes flow has no step in it. */
+    bool
+    pressure_independent_of_step() const override
+    {
+      return true;
     }
 
   private:
@@ -222,6 +238,16 @@ namespace levelsinter
     set_time_step(const double time_step) override
     {
       dt = time_step;
+    }
+
+    /** With Delta u = dt v the solid's equations above do not contain dt
+     * (the ASGS tau ~ h^2 / a1 scales with 1 / dt too); only the
+     * atmosphere's eta_f eps(v) does, a relative eta_f / (G dt) of the
+     * solid's stress (measured: doc/numerics.md, "Volume diffusion"). */
+    bool
+    pressure_independent_of_step() const override
+    {
+      return true;
     }
 
   private:

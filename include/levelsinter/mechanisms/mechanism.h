@@ -23,7 +23,7 @@ namespace levelsinter
    * several times for the same t, with a smaller dt each time) -> after the
    * transport check_step() and add_correction_velocity() -> accept_step(),
    * which makes the trial the mechanism's state; or reject_step() at any
-   * point, which drops it. The state a mesh change or a checkpoint carries
+   * point, which drops it (shorten_step() before a smaller dt). The state a mesh change or a checkpoint carries
    * (add_state()) is always that of the last accepted step.
    */
   template <int dim>
@@ -155,6 +155,19 @@ namespace levelsinter
     virtual void
     reject_step()
     {}
+
+    /**
+     * The trial step is taken again from the same state with a shorter
+     * step (its velocity was too fast for the one chosen): add_velocity()
+     * follows with the shorter dt. A mechanism whose expensive part does
+     * not depend on the step may keep it; by default the trial is dropped
+     * as in reject_step().
+     */
+    virtual void
+    shorten_step()
+    {
+      reject_step();
+    }
 
     /**
      * True if the velocity is driven by the interface's curvature (surface

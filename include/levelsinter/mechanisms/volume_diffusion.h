@@ -76,6 +76,18 @@ namespace levelsinter
     void
     accept_step(const LevelSetField<dim> &alpha) override;
 
+    void
+    reject_step() override;
+
+    /**
+     * A step taken again shorter from the same state keeps the elastic
+     * solve and xi where the law's pressure does not depend on the step
+     * (the elastic solid: dt v = Delta u is what the solve finds), so that
+     * a one-step speed spike costs no second elastic assembly and solve.
+     */
+    void
+    shorten_step() override;
+
     /** The displacement u^{n-1} of the next step on the new mesh. */
     void
     add_state(const LevelSetField<dim> &alpha,
@@ -125,13 +137,17 @@ namespace levelsinter
     }
 
   private:
-    // Solve the elastic problem with the step @p step_seconds and add
-    // v = -C_v xi N (Eq. 112).
+    // Solve the elastic problem with the step @p step_seconds and extend
+    // its xi.
     void
-    solve_velocity(const LevelSetField<dim> &alpha,
-                   const double              t,
-                   const double              step_seconds,
-                   VelocityField<dim>       &velocity);
+    solve(const LevelSetField<dim> &alpha,
+          const double              t,
+          const double              step_seconds);
+
+    // Add v = -C_v xi N (Eq. 112) of the last solve.
+    void
+    add_diffusion_velocity(const LevelSetField<dim> &alpha,
+                           VelocityField<dim>       &velocity) const;
 
     const double                          coefficient; // C_v, scene time
     // The elastic problem runs in seconds (eta_f in MPa s, Eq. 92-94)
@@ -148,8 +164,10 @@ namespace levelsinter
     TimerOutput                          &timer;
     std::unique_ptr<VelocityPressureOperator<dim>> operator_;
     NormalGradientExtension<dim>          extension;
-    // The step of the last trial, in seconds.
-    double       trial_step           = 0;
+    // The step of the last elastic solve, in seconds, and whether the
+    // next add_velocity() keeps that solve (shorten_step()).
+    double       solved_step          = 0;
+    bool         keep_solve           = false;
     unsigned int mechanics_iterations = 0;
     unsigned int xi_iterations        = 0;
     bool         warned_unsourced     = false;

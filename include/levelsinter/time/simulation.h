@@ -185,6 +185,10 @@ namespace levelsinter
     // Every mechanism drops its trial step (Mechanism::reject_step()).
     void
     reject_trial_step();
+    // The trial is taken again with a shorter step
+    // (Mechanism::shorten_step()).
+    void
+    shorten_trial_step();
     unsigned int
     correct_step(const double dt);
     double
