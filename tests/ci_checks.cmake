@@ -154,6 +154,18 @@ set_tests_properties(step_retry PROPERTIES
   PASS_REGULAR_EXPRESSION "retrying with dt.*done: 30 steps")
 bad_input_test(step_failure "failed 4 times"
   --set "Level set/Maximum solver iterations=1" ${SCENE})
+# A particle between the nodes of the coarse levels (centre (0.3125,
+# 0.3125), the middle of a cell of 0.125 at Minimum level 1, R = 0.05, the
+# nearest node 0.038 outside it) and a band of 0.02: no node sees it, the
+# band is never found there, and the run must stop rather than run without
+# it (with Minimum level = 3 the same scene runs).
+bad_input_test(particle_missed_by_initial_mesh
+  "the initial mesh missed particles: 4 of the 4 points"
+  --set "Geometry/Particles=0.3125, 0.3125, 0.05"
+  --set "Mesh refinement/Maximum level=6"
+  --set "Mesh refinement/Band width=0.02"
+  --set "Level set/Filter thickness=0.03"
+  ${CMAKE_CURRENT_SOURCE_DIR}/scenes/translation_2d.prm)
 
 # --- Viscous flow ------------------------------------------------------------
 # Static bubble (paper Sect. 6.3.1), one solve per h and form, ASGS

@@ -3,6 +3,7 @@
 
 #include <deal.II/fe/fe_values.h>
 
+#include <deal.II/grid/grid_tools.h>
 
 #include <deal.II/lac/vector.h>
 
@@ -115,6 +116,27 @@ namespace levelsinter
     result.max_curvature_times_h =
       Utilities::MPI::max(result.max_curvature_times_h, comm);
     return result;
+  }
+
+  template <int dim>
+  std::vector<Point<dim>>
+  InterfaceBandRefinement<dim>::points_in_coarse_cells(
+    const parallel::distributed::Triangulation<dim> &tria,
+    const std::vector<Point<dim>>                   &interface_points) const
+  {
+    std::vector<Point<dim>> coarse;
+    for (const auto &p : interface_points)
+      {
+        const auto cell = GridTools::find_active_cell_around_point(tria, p);
+        if (cell.state() == IteratorState::valid && cell->is_locally_owned() &&
+            cell->level() < int(settings.max_level))
+          coarse.push_back(p);
+      }
+    std::vector<Point<dim>> all;
+    for (const auto &part :
+         Utilities::MPI::all_gather(tria.get_communicator(), coarse))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
   }
 
   template <int dim>

@@ -191,6 +191,58 @@ namespace levelsinter
           break;
         tria.execute_coarsening_and_refinement();
       }
+    check_particles_refined();
+  }
+
+  template <int dim>
+  void
+  Simulation<dim>::check_particles_refined() const
+  {
+    // The poles of each particle along the axes, where they lie on the
+    // solid's surface (not inside another particle or cut away by a pore)
+    // and in the box.
+    std::vector<Point<dim>> poles;
+    double                  smallest_radius = std::numeric_limits<double>::max();
+    for (const auto &particle : scene.geometry.particles)
+      {
+        const double r  = particle[dim];
+        smallest_radius = std::min(smallest_radius, r);
+        for (unsigned int d = 0; d < dim; ++d)
+          for (const double side : {-1., 1.})
+            {
+              Point<dim> p;
+              for (unsigned int e = 0; e < dim; ++e)
+                p[e] = particle[e];
+              p[d] += side * r;
+              bool inside = true;
+              for (unsigned int e = 0; e < dim; ++e)
+                inside = inside && p[e] > scene.domain.lower_corner[e] &&
+                         p[e] < scene.domain.upper_corner[e];
+              if (inside && std::abs(initial_distance->value(p)) < 1e-9 * r)
+                poles.push_back(p);
+            }
+      }
+    const auto missed = band_refinement.points_in_coarse_cells(tria, poles);
+    if (missed.empty())
+      return;
+    std::ostringstream where;
+    where << missed.front();
+    throw std::runtime_error(
+      "the initial mesh missed particles: " + std::to_string(missed.size()) +
+      " of the " + std::to_string(poles.size()) +
+      " points sampled on the particles' surfaces (their poles along the "
+      "axes) lie in cells coarser than 'Mesh refinement/Maximum level', the "
+      "first at (" + where.str() + "). The band is found level by level "
+      "from the nodes, and no node of the coarse levels came within the band "
+      "width of these particles. Raise 'Mesh refinement/Minimum level' (its "
+      "cells are " +
+      std::to_string((scene.domain.upper_corner[0] -
+                      scene.domain.lower_corner[0]) /
+                     scene.domain.subdivisions[0] /
+                     std::pow(2., scene.refinement.min_level)) +
+      " wide, the smallest particle radius is " +
+      std::to_string(smallest_radius) + ") or widen 'Mesh refinement/Band "
+      "width'.");
   }
 
   template <int dim>

@@ -53,6 +53,18 @@ namespace levelsinter
     mark_cells(parallel::distributed::Triangulation<dim> &tria,
                const LevelSetField<dim>                  &level_set) const;
 
+    /**
+     * The points of @p interface_points (on the interface) that lie in a
+     * locally owned cell coarser than the maximum level, gathered from all
+     * ranks: parts of the interface the band missed. The initial
+     * refinement can miss a body whose surface passes between the nodes of
+     * the coarse levels, which then never see it.
+     */
+    std::vector<Point<dim>>
+    points_in_coarse_cells(
+      const parallel::distributed::Triangulation<dim> &tria,
+      const std::vector<Point<dim>>                   &interface_points) const;
+
     /** The finest level a cell can reach: maximum level + curvature levels. */
     unsigned int
     finest_level() const;

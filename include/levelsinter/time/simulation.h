@@ -164,6 +164,10 @@ namespace levelsinter
   private:
     void
     refine_initial_mesh();
+    // Throws if the initial refinement left part of a particle's surface
+    // in cells coarser than the maximum level.
+    void
+    check_particles_refined() const;
     void
     adapt_mesh();
     void
