@@ -123,14 +123,15 @@ set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
 # levelsinter-pack seed 1 in a box of (27/154)^(1/3) x 1.2 rounded up to
 # 0.9 um) with the coupled 154 scene's settings, to t = 0.01 s: the CFL
 # number 0.5 (the scene's), 1 and 2 (its band widened from 4.8 to 5.1
-# cells, as the band must hold (Adapt interval x CFL + 1) cells), and the
-# mesh coarsened by 2 with the band and the filter (lengths in cells
-# kept). Each case keeps a checkpoint
+# cells, as the band must hold (Adapt interval x CFL + 1) cells). No other
+# mesh: at 2 h no node lies lambda = 3 cells inside a sphere (the run is
+# refused), and at h / 2 the volume-diffusion spikes cut the step to 2e-5 s
+# (measured on 8 spheres, doc/performance.md: about 17 h to t = 0.005 s).
+# Each case keeps a checkpoint
 # every 5 steps and is resumed where it stopped; metrics at every step, so
 # that the comparison at fixed times interpolates between close rows.
 # Measured (27 Nov 2026, doc/validation.md): CFL 2 / 1 / 0.5 in 24 / 34 /
-# 50 steps, 4.4e3 s wall for the reference on 1 rank of a shared machine;
-# h2 not run yet (about 20 GB).
+# 50 steps, 4.4e3 s wall for the reference on 1 rank of a shared machine.
 add_test(NAME packing_convergence_27 COMMAND
   ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
   $<TARGET_FILE:levelsinter>
@@ -141,10 +142,35 @@ add_test(NAME packing_convergence_27 COMMAND
   --set "Domain/Upper corner=0.9,0.9,0.9"
   --set "Domain/Subdivisions=3,3,3" --set "Output/Metrics interval=1"
   --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/packing_27_like_154_3d.csv"
-  --case "h2:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.09;Level set/Filter thickness=0.112"
   --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
   --case "cfl1:Time/CFL number=1"
   --case "reference"
   --reference reference)
 set_tests_properties(packing_convergence_27 PROPERTIES
   LABELS validation-long TIMEOUT 10800)
+
+# The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
+# "Packings: resolution and step"): 8 spheres made like the 154 with the
+# settings of packing_154_surface_diffusion_3d.prm to its end time t =
+# 0.033 s, at h (the scene), 2 h and h / 2, the band and the filter scaled
+# with h (lengths in cells kept); h / 2 starts from Minimum level 2, as at
+# level 1 no node sees the spheres at a band of 0.02 um (the run would stop
+# at its start). The step is the scene's cap of 1e-3 s at every mesh (not
+# CFL-bound), so only h changes. Measured (27 Nov 2026): 1 rank on a shared
+# machine, about 1, 5 and 20 min.
+add_test(NAME packing_resolution_sd_8 COMMAND
+  ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
+  $<TARGET_FILE:levelsinter>
+  ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_surface_diffusion_3d.prm
+  --work ${CMAKE_CURRENT_BINARY_DIR}/packing_resolution_sd_8
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_resolution_sd_8.csv
+  --end-time 0.033 --times 0.005,0.01,0.02,0.033
+  --set "Domain/Upper corner=0.6,0.6,0.6"
+  --set "Domain/Subdivisions=2,2,2" --set "Output/Metrics interval=1"
+  --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/packing_8_like_154_3d.csv"
+  --case "coarse:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.08;Level set/Filter thickness=0.112"
+  --case "reference"
+  --case "fine:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Mesh refinement/Band width=0.02;Level set/Filter thickness=0.028"
+  --reference fine --ranks 1)
+set_tests_properties(packing_resolution_sd_8 PROPERTIES
+  LABELS validation-long TIMEOUT 7200)
