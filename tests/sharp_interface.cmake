@@ -283,3 +283,21 @@ ranks_agree(sharp_hole_closing_ranks_2d sharp_hole_closing_ranks
   --set "Mesh refinement/Band width=0.1125"
   --set "Level set/Filter thickness=0.15" --set "Output/Metrics interval=1"
   ${SHARP_EXTENDED} --set "Viscous flow/Pore closure radius=1")
+# Hopper from two circles overlapping at x0 = 0.05 R (doc/validation.md,
+# "Sharp interfaces: two ranks, the rule's cost"): two_cylinders_2d.prm
+# (R/h = 20, k curvature levels) started from the circles at t = 0, to
+# t gamma/(eta R) = 0.5 + tau0; neck errors at tau = 0.05, 0.1, 0.2, 0.5.
+set(HOPPER_CIRCLES_005 --circle-start 1 --set "Geometry/Shape=particles"
+  --set "Geometry/Particles=-0.24968730444297724, 0, 0.25\; 0.24968730444297724, 0, 0.25"
+  --set "Time/Start time=0" --set "Time/End time=0.125")
+foreach(case_args "continuous_k4;--set;Viscous flow/Pressure space=continuous"
+    "extended_k4;${SHARP_EXTENDED}"
+    "continuous_k6;--set;Mesh refinement/Curvature refinement levels=6")
+  list(GET case_args 0 case)
+  list(REMOVE_AT case_args 0)
+  add_test(NAME study_sharp_hopper_circles_${case}_2d COMMAND ${VISCOUS} hopper
+    ${VISCOUS_SCENES}/two_cylinders_2d.prm 5 ${HOPPER_CIRCLES_005} ${case_args}
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/sharp_hopper_circles_${case}_2d.csv)
+  set_tests_properties(study_sharp_hopper_circles_${case}_2d PROPERTIES
+    LABELS validation-long RESOURCE_LOCK viscous_hopper_output)
+endforeach()
