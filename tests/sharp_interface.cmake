@@ -292,7 +292,8 @@ set(HOPPER_CIRCLES_005 --circle-start 1 --set "Geometry/Shape=particles"
   --set "Time/Start time=0" --set "Time/End time=0.125")
 foreach(case_args "continuous_k4;--set;Viscous flow/Pressure space=continuous"
     "extended_k4;${SHARP_EXTENDED}"
-    "continuous_k6;--set;Mesh refinement/Curvature refinement levels=6")
+    "continuous_k6;--set;Mesh refinement/Curvature refinement levels=6"
+    "extended_k6;--set;Mesh refinement/Curvature refinement levels=6;${SHARP_EXTENDED}")
   list(GET case_args 0 case)
   list(REMOVE_AT case_args 0)
   add_test(NAME study_sharp_hopper_circles_${case}_2d COMMAND ${VISCOUS} hopper
