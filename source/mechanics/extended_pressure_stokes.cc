@@ -266,7 +266,9 @@ namespace levelsinter
                                     update_quadrature_points);
     const std::array<PhaseCoefficients, 2> laws = {
       {phase_law.coefficients({1, 0}), phase_law.coefficients({0, 1})}};
-    FullMatrix<double> matrix, schur;
+    FullMatrix<double> matrix, schur, matrix_p, schur_p;
+    std::vector<unsigned int>            pressure_dofs;
+    std::vector<types::global_dof_index> indices;
     for_each_penalty_face([&](const auto        &cell,
                               const unsigned int f,
                               const auto        &neighbor,
@@ -302,11 +304,38 @@ namespace levelsinter
                              law.a2 * h * h * h / law.a1,
                              matrix,
                              schur);
-            const auto indices = values.get_interface_dof_indices();
-            constraints.distribute_local_to_global(matrix,
+            // Add the rows of the phase's pressure only, the entries the
+            // pattern holds: the face's other DoFs include the neighbour's
+            // constrained velocities, whose diagonal the constraints would
+            // add to a row another rank owns and this one has no entry in.
+            pressure_dofs.clear();
+            indices.clear();
+            const auto all = values.get_interface_dof_indices();
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const auto local = values.interface_dof_to_dof_indices(i);
+                const unsigned int k =
+                  local[0] != numbers::invalid_unsigned_int ? local[0] :
+                                                              local[1];
+                if (finite_element.system_to_component_index(k).first ==
+                    pressure_component(phase))
+                  {
+                    pressure_dofs.push_back(i);
+                    indices.push_back(all[i]);
+                  }
+              }
+            matrix_p.reinit(indices.size(), indices.size());
+            schur_p.reinit(indices.size(), indices.size());
+            matrix_p.extract_submatrix_from(matrix,
+                                            pressure_dofs,
+                                            pressure_dofs);
+            schur_p.extract_submatrix_from(schur,
+                                           pressure_dofs,
+                                           pressure_dofs);
+            constraints.distribute_local_to_global(matrix_p,
                                                    indices,
                                                    system_matrix);
-            constraints.distribute_local_to_global(schur,
+            constraints.distribute_local_to_global(schur_p,
                                                    indices,
                                                    schur_matrix);
           }

@@ -88,8 +88,7 @@ namespace levelsinter
 
     std::vector<Seen>
     closed_pores(const LevelSetField<dim> &level_set,
-                 std::vector<int>         *vertex_pores,
-                 std::vector<double>      *part_volumes) const;
+                 std::vector<int>         *vertex_pores) const;
 
     const std::vector<types::boundary_id> symmetry_boundaries;
     const BoundingBox<dim>                box;
