@@ -46,6 +46,10 @@ if a check fails.
       every grain keeps its share of the solid: at every row of
       metrics.csv grain_volume_change_max exceeds |volume_change| (each
       grain's volume may follow the solid's) by at most TOLERANCE.
+  check_grains.py angle RUN RATIO T_FROM TOLERANCE_DEGREES
+      the dihedral angle of grain_boundaries.csv at every row with time
+      >= T_FROM (the triple line relaxed) within TOLERANCE_DEGREES of psi,
+      cos(psi/2) = RATIO / 2; prints the range measured.
   check_grains.py initial RUN R TOLERANCE_DEGREES RELATIVE_TOLERANCE
       step 0 of grain_boundaries.csv (two overlapping circles of radius
       R): the dihedral angle where the circles meet, cos(psi/2) = d / (2
@@ -232,6 +236,19 @@ def equilibrium(run, ratio, body, out):
                 f.write(",".join("%.8g" % v for v in r) + "\n")
 
 
+def angle(run, ratio, t_from, tolerance_degrees):
+    psi = 2 * math.degrees(math.acos(ratio / 2))
+    measured = [row["dihedral_angle"] for row in rows(run + "/grain_boundaries.csv")
+                if row["time"] >= t_from]
+    if not measured:
+        fail("no row at t >= %g" % t_from)
+    low, high = min(measured), max(measured)
+    print("angle: psi %.4g degrees; measured %.4g to %.4g over %d rows at t >= %g"
+          % (psi, low, high, len(measured), t_from))
+    if not max(abs(low - psi), abs(high - psi)) <= tolerance_degrees:
+        fail("dihedral angle off by more than %g degrees" % tolerance_degrees)
+
+
 def initial(run, radius, tolerance_degrees, tolerance):
     row = rows(run + "/grain_boundaries.csv")[0]
     d = row["centre_distance"]
@@ -271,6 +288,8 @@ if __name__ == "__main__":
                     args[4] if len(args) > 4 and args[3] == "--csv" else None)
     elif mode == "conserved":
         conserved(args[0], float(args[1]))
+    elif mode == "angle":
+        angle(args[0], *map(float, args[1:4]))
     elif mode == "initial":
         initial(args[0], *map(float, args[1:4]))
     elif mode == "same":

@@ -176,7 +176,8 @@ namespace levelsinter::grain_geometry
   double
   triple_line_weight(const GrainBoundary<dim> &boundary,
                      const Point<dim>         &x,
-                     const double              width)
+                     const double              width,
+                     const double              plateau)
   {
     const Tensor<1, dim> offset = x - boundary.origin;
     const double         zeta   = offset * boundary.normal;
@@ -189,7 +190,8 @@ namespace levelsinter::grain_geometry
           const Tensor<1, dim> t({-boundary.normal[1], boundary.normal[0]});
           end = boundary.end_distance[radial * t >= 0 ? 0 : 1];
         }
-    return bump(zeta / width) * bump((radial.norm() - end) / width);
+    const double along = std::max(std::abs(radial.norm() - end) - plateau, 0.);
+    return bump(zeta / width) * bump(along / std::max(width, plateau));
   }
 
   template <int dim>
@@ -314,9 +316,15 @@ namespace levelsinter::grain_geometry
   template std::vector<GrainBoundary<3>>
   find_grain_boundaries(const LevelSetField<3> &, const PowerCells<3> &);
   template double
-  triple_line_weight(const GrainBoundary<2> &, const Point<2> &, const double);
+  triple_line_weight(const GrainBoundary<2> &,
+                     const Point<2> &,
+                     const double,
+                     const double);
   template double
-  triple_line_weight(const GrainBoundary<3> &, const Point<3> &, const double);
+  triple_line_weight(const GrainBoundary<3> &,
+                     const Point<3> &,
+                     const double,
+                     const double);
   template void
   grain_shares(const PowerCells<2> &,
                const Point<2> &,

@@ -93,7 +93,8 @@ namespace levelsinter
   std::vector<double>
   GrainBoundaryDiffusion<dim>::kernel_sums(
     const LevelSetField<dim>        &alpha,
-    const MixedCurvatureSolver<dim> *geometry) const
+    const MixedCurvatureSolver<dim> *geometry,
+    const bool                       kink) const
   {
     // Per boundary, over the discrete interface: the deposition's volume
     // rate per unit speed, int I_h(w N) . n (W), and int I_h(w kappa) (with
@@ -110,7 +111,7 @@ namespace levelsinter
       cell->get_dof_indices(indices);
       for (unsigned int b = 0; b < nb; ++b)
         {
-          if (!kernel_weights(boundaries[b], cell, w))
+          if (!kernel_weights(boundaries[b], cell, w, kink))
             continue;
           for (const unsigned int q : values.quadrature_point_indices())
             {
@@ -145,12 +146,16 @@ namespace levelsinter
   GrainBoundaryDiffusion<dim>::kernel_weights(
     const grain_geometry::GrainBoundary<dim>            &boundary,
     const typename DoFHandler<dim>::active_cell_iterator &cell,
-    std::vector<double>                                  &w) const
+    std::vector<double>                                  &w,
+    const bool                                            kink) const
   {
-    const double reach = std::max({boundary.radius,
+    const double width   = kink ? kink_width : deposition_width;
+    const double plateau = kink ? kink_plateau : 0.;
+    const double reach   = std::max({boundary.radius,
                                    boundary.end_distance[0],
                                    boundary.end_distance[1]}) +
-                         2 * deposition_width + cell->diameter();
+                         plateau + 2 * std::max(width, plateau) +
+                         cell->diameter();
     if (cell->center().distance(boundary.origin) > reach)
       return false;
     bool any = false;
@@ -158,7 +163,8 @@ namespace levelsinter
       {
         w[v] = grain_geometry::triple_line_weight(boundary,
                                                   cell->vertex(v),
-                                                  deposition_width);
+                                                  width,
+                                                  plateau);
         any  = any || w[v] > 0;
       }
     return any;
@@ -171,6 +177,9 @@ namespace levelsinter
     boundaries = grain_geometry::find_grain_boundaries(alpha, grains());
     h_min      = finest_cell_size(alpha.dof_handler().get_triangulation());
     deposition_width = parameters.deposition_width * h_min;
+    kink_width       = parameters.kink_width * h_min;
+    kink_plateau =
+      surface_diffusion.geometry().band_filter().thickness();
   }
 
   template <int dim>
@@ -185,8 +194,11 @@ namespace levelsinter
     // mu = S P_b w_b / int I_h(w_b): across each triple line the potential
     // integrates to S = pi - psi per unit length of the line (P_b its
     // length in the domain), the turning of the surface's tangent there at
-    // equilibrium.
-    const auto          sums = kernel_sums(alpha, nullptr);
+    // equilibrium. The sharp form's w_b is a ridge on the boundary's plane
+    // along the band, so that every level curve crossing the plane near
+    // the line turns there, as the sharp surfaces do.
+    const bool          kink = kink_width > 0;
+    const auto          sums = kernel_sums(alpha, nullptr, kink);
     std::vector<double> scale(boundaries.size(), 0.);
     for (unsigned int b = 0; b < boundaries.size(); ++b)
       if (sums[3 * b + 2] > 0)
@@ -202,7 +214,7 @@ namespace levelsinter
         {
           std::fill(value.begin(), value.end(), 0.);
           for (unsigned int b = 0; b < boundaries.size(); ++b)
-            if (scale[b] > 0 && kernel_weights(boundaries[b], cell, w))
+            if (scale[b] > 0 && kernel_weights(boundaries[b], cell, w, kink))
               for (unsigned int v = 0; v < w.size(); ++v)
                 value[v] += scale[b] * w[v];
           for (unsigned int v = 0; v < w.size(); ++v)

@@ -57,6 +57,17 @@ namespace levelsinter
                         "(doc/numerics.md, \"The dihedral angle at the "
                         "triple line\"), and the neck root's curvature of "
                         "the contact law is that potential.");
+      prm.declare_entry("Triple-line kink width",
+                        "0",
+                        Patterns::Double(0),
+                        "With the triple-line condition: 0 spreads the "
+                        "turning of the surface's tangent at the triple "
+                        "line (pi - psi) over the kernel of Deposition "
+                        "width about the line; a width k > 0 puts it on "
+                        "the grain boundary's plane, within k finest cells "
+                        "of it, for every level curve of the band that "
+                        "crosses the plane near the line (doc/numerics.md, "
+                        "\"The sharp triple-line condition\").");
       prm.declare_entry("Conserve grain volumes",
                         "false",
                         Patterns::Bool(),
@@ -80,6 +91,7 @@ namespace levelsinter
     sliding_resistance = prm.get_double("Sliding resistance");
     deposition_width   = prm.get_double("Deposition width");
     triple_line        = prm.get_bool("Triple-line condition");
+    kink_width         = prm.get_double("Triple-line kink width");
     conserve_volumes   = prm.get_bool("Conserve grain volumes");
     prm.leave_subsection();
     if (!enabled)
@@ -88,6 +100,11 @@ namespace levelsinter
       fail_entry("Grain boundaries/Energy ratio",
                  "gamma_gb / gamma_s must lie in [0, 2): at 2 and above "
                  "the grains do not wet each other (no dihedral angle)");
+    if (kink_width > 0 && !triple_line)
+      fail_entry("Grain boundaries/Triple-line kink width",
+                 "a kink width needs Triple-line condition = true (it "
+                 "places that condition's turning); set it to 0 or turn "
+                 "the condition on");
     if (!(coefficient > 0))
       fail_entry("Grain boundaries/Coefficient",
                  "C_gb = delta_gb D_gb gamma_s Omega / kT must be positive");

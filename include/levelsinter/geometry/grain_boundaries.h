@@ -69,13 +69,17 @@ namespace levelsinter
      * The kernel about the triple line of @p boundary at @p x: phi(zeta /
      * l) phi((rho - a) / l), zeta the distance from the boundary's plane,
      * rho from the line of centres (in 2D to the end on x's side), phi(s)
-     * = (1 + cos pi s) / 2 on |s| < 1, else 0.
+     * = (1 + cos pi s) / 2 on |s| < 1, else 0. With @p plateau p > 0 it is
+     * phi(zeta / l) phi(max(|rho - a| - p, 0) / max(l, p)): flat along the
+     * plane over p either side of the triple line (the sharp triple-line
+     * condition's kernel, narrow across the plane).
      */
     template <int dim>
     double
     triple_line_weight(const GrainBoundary<dim> &boundary,
                        const Point<dim>         &x,
-                       const double              width);
+                       const double              width,
+                       const double              plateau = 0);
 
     /**
      * The shares of the point @p x among the grains @p near (PowerCells::

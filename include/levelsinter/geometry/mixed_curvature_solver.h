@@ -117,6 +117,13 @@ namespace levelsinter
       return normals;
     }
 
+    /** The filter whose band (|d| < 0.8 E) the system lives on. */
+    const LevelSetFilter &
+    band_filter() const
+    {
+      return filter;
+    }
+
     /**
      * A chemical potential mu (ghosted, on the level set's DoFs; nullptr:
      * none) added to the curvature from the next solve on: the kappa row

@@ -132,17 +132,22 @@ namespace levelsinter
                           TrilinosWrappers::MPI::Vector &mu);
 
     // The kernel w of @p boundary at the vertices of @p cell into @p w;
-    // false if it is zero at all of them.
+    // false if it is zero at all of them. With @p kink the sharp
+    // condition's kernel (narrow across the plane, flat along it over the
+    // band), else the deposition's.
     bool
     kernel_weights(const grain_geometry::GrainBoundary<dim>            &boundary,
                    const typename DoFHandler<dim>::active_cell_iterator &cell,
-                   std::vector<double> &w) const;
+                   std::vector<double> &w,
+                   const bool           kink = false) const;
 
     // Per boundary: int over the interface of I_h(w N) . n, I_h(w kappa)
-    // (N and kappa of @p geometry; zero without) and I_h(w).
+    // (N and kappa of @p geometry; zero without) and I_h(w), w the kernel
+    // of kernel_weights(..., @p kink).
     std::vector<double>
     kernel_sums(const LevelSetField<dim>        &alpha,
-                const MixedCurvatureSolver<dim> *geometry) const;
+                const MixedCurvatureSolver<dim> *geometry,
+                const bool                       kink = false) const;
 
     // Grain boundaries, root curvatures and the trial velocities from the
     // level set and the accepted centres.
@@ -184,6 +189,10 @@ namespace levelsinter
     // Per contact: the deposition speed per unit kernel weight, Q / W.
     std::vector<double>           deposition_speed;
     double                        deposition_width = 0;
+    // The sharp condition's kernel: half-width across the plane (0: the
+    // regularised condition) and its plateau along it (the band's E).
+    double kink_width   = 0;
+    double kink_plateau = 0;
     // The largest approach rate and deposition speed of the last compute().
     double max_speed = 0;
     double h_min     = 0;

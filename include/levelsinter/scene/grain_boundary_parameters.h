@@ -43,6 +43,7 @@ namespace levelsinter
     double sliding_resistance = 1; // beta
     double deposition_width   = 2; // l in finest cells
     bool   triple_line        = false; // the dihedral angle in surface diffusion
+    double kink_width         = 0; // its kink across the plane, finest cells
     bool   conserve_volumes   = false; // planes moved to keep each grain's volume
   };
 } // namespace levelsinter
