@@ -132,22 +132,31 @@ set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
 # that the comparison at fixed times interpolates between close rows.
 # Measured (27 Nov 2026, doc/validation.md): CFL 2 / 1 / 0.5 in 24 / 34 /
 # 50 steps, 4.4e3 s wall for the reference on 1 rank of a shared machine.
-add_test(NAME packing_convergence_27 COMMAND
-  ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
-  $<TARGET_FILE:levelsinter>
-  ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_coupled_3d.prm
-  --work ${CMAKE_CURRENT_BINARY_DIR}/packing_convergence_27
-  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_convergence_27.csv
-  --end-time 0.01 --times 0.0025,0.005,0.01
-  --set "Domain/Upper corner=0.9,0.9,0.9"
-  --set "Domain/Subdivisions=3,3,3" --set "Output/Metrics interval=1"
-  --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/packing_27_like_154_3d.csv"
+# packing_convergence_test(NAME SCENE BOX CELLS PARTICLES END TIMES
+#   ARGS...): scripts/packing_convergence.py on SCENE with PARTICLES in
+#   [0, BOX]^3 (CELLS coarse cells per axis) to END, compared at TIMES, its
+#   table in doc/validation_data/NAME.csv; ARGS: the cases and options.
+function(packing_convergence_test name scene box cells particles end times)
+  add_test(NAME ${name} COMMAND
+    ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
+    $<TARGET_FILE:levelsinter> ${CMAKE_SOURCE_DIR}/parameter_files/${scene}
+    --work ${CMAKE_CURRENT_BINARY_DIR}/${name}
+    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/${name}.csv
+    --end-time ${end} --times ${times}
+    --set "Domain/Upper corner=${box},${box},${box}"
+    --set "Domain/Subdivisions=${cells},${cells},${cells}"
+    --set "Output/Metrics interval=1"
+    --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/${particles}"
+    ${ARGN})
+  set_tests_properties(${name} PROPERTIES
+    LABELS validation-long TIMEOUT 10800)
+endfunction()
+packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
+  0.9 3 packing_27_like_154_3d.csv 0.01 0.0025,0.005,0.01
   --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
   --case "cfl1:Time/CFL number=1"
   --case "reference"
   --reference reference)
-set_tests_properties(packing_convergence_27 PROPERTIES
-  LABELS validation-long TIMEOUT 10800)
 
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
@@ -157,20 +166,11 @@ set_tests_properties(packing_convergence_27 PROPERTIES
 # level 1 no node sees the spheres at a band of 0.02 um (the run would stop
 # at its start). The step is the scene's cap of 1e-3 s at every mesh (not
 # CFL-bound), so only h changes. Measured (27 Nov 2026): 1 rank on a shared
-# machine, about 1, 5 and 20 min.
-add_test(NAME packing_resolution_sd_8 COMMAND
-  ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
-  $<TARGET_FILE:levelsinter>
-  ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_surface_diffusion_3d.prm
-  --work ${CMAKE_CURRENT_BINARY_DIR}/packing_resolution_sd_8
-  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_resolution_sd_8.csv
-  --end-time 0.033 --times 0.005,0.01,0.02,0.033
-  --set "Domain/Upper corner=0.6,0.6,0.6"
-  --set "Domain/Subdivisions=2,2,2" --set "Output/Metrics interval=1"
-  --set "Geometry/Particle file=${CMAKE_SOURCE_DIR}/parameter_files/packing_8_like_154_3d.csv"
+# machine, 98 s, 329 s and 1067 s.
+packing_convergence_test(packing_resolution_sd_8
+  packing_154_surface_diffusion_3d.prm 0.6 2 packing_8_like_154_3d.csv
+  0.033 0.005,0.01,0.02,0.033
   --case "coarse:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.08;Level set/Filter thickness=0.112"
   --case "reference"
   --case "fine:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Mesh refinement/Band width=0.02;Level set/Filter thickness=0.028"
   --reference fine --ranks 1)
-set_tests_properties(packing_resolution_sd_8 PROPERTIES
-  LABELS validation-long TIMEOUT 7200)
