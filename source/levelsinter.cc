@@ -8,12 +8,14 @@
 #include <levelsinter/time/simulation.h>
 #include <levelsinter/version.h>
 
+#include <chrono>
 #include <csignal>
 #include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <optional>
 #include <sstream>
+#include <thread>
 
 namespace
 {
@@ -58,6 +60,33 @@ namespace
     return out.str();
   }
 
+  // Whether every rank has reached a failure within @p seconds. An error
+  // found collectively (a solver, a check on global values) reaches all
+  // ranks at about the same point; one found by a single rank (a file only
+  // the first rank writes, an error inside a rank's own assembly) leaves
+  // the others waiting in a collective call that never completes, and the
+  // run would hang. The barrier runs on a communicator of its own, so that
+  // it cannot meet the calls they wait in.
+  bool
+  every_rank_failed(const MPI_Comm failure_comm, const double seconds)
+  {
+    MPI_Request request;
+    MPI_Ibarrier(failure_comm, &request);
+    const auto start = std::chrono::steady_clock::now();
+    for (;;)
+      {
+        int done = 0;
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done)
+          return true;
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                          start)
+              .count() > seconds)
+          return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+  }
+
   // Returns the exit code: 0, or 128 + the signal that stopped the run
   // (doc/user_guide.md, "Exit codes").
   template <int dim>
@@ -76,6 +105,7 @@ namespace
     std::string failure;
     bool        started     = false;
     int         stop_signal = 0;
+    const Utilities::MPI::DuplicatedCommunicator failure_comm(comm);
     {
       // Everything is checked (the scene, the mechanisms it builds, the
       // output directory) before the earlier run is removed and anything
@@ -138,6 +168,17 @@ namespace
       catch (const std::exception &e)
         {
           failure = e.what();
+          if (Utilities::MPI::n_mpi_processes(comm) > 1 &&
+              !every_rank_failed(*failure_comm, 60))
+            {
+              std::cerr << "levelsinter: error on rank "
+                        << Utilities::MPI::this_mpi_process(comm)
+                        << " alone: " << failure
+                        << "; the other ranks cannot go on without it, so "
+                           "the run is aborted (the last checkpoint stays)"
+                        << std::endl;
+              MPI_Abort(comm, 1);
+            }
         }
       if (started)
         simulation->timer().print_wall_time_statistics(comm);
