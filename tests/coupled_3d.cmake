@@ -84,14 +84,11 @@ add_test(NAME coupled_packing_8_3d COMMAND $<TARGET_FILE:levelsinter>
   ${CMAKE_SOURCE_DIR}/parameter_files/packing_154_coupled_3d.prm)
 set_tests_properties(coupled_packing_8_3d PROPERTIES
   FIXTURES_SETUP coupled_packing_8_3d)
-add_test(NAME coupled_packing_8_3d_unchanged
-  COMMAND compare_metrics coupled_packing_8_3d/metrics.csv
-    ${CMAKE_CURRENT_SOURCE_DIR}/reference/coupled_packing_8_3d_metrics.csv
-    2e-3 ${TIMING_COLUMNS} transport_iterations surface_diffusion_iterations
-    surface_diffusion_solve_cpu_time volume_diffusion_mechanics_iterations
-    volume_diffusion_xi_iterations)
-set_tests_properties(coupled_packing_8_3d_unchanged PROPERTIES
-  FIXTURES_REQUIRED coupled_packing_8_3d)
+metrics_unchanged(coupled_packing_8_3d_unchanged coupled_packing_8_3d
+  coupled_packing_8_3d_metrics.csv 2e-3
+  transport_iterations surface_diffusion_iterations
+  surface_diffusion_solve_cpu_time volume_diffusion_mechanics_iterations
+  volume_diffusion_xi_iterations)
 # Its cost per step and phase (CPU of each timer section): the same 2
 # steps through the neck driver, which prints the sections.
 add_test(NAME benchmark_coupled_packing_27_3d

@@ -81,11 +81,7 @@ add_test(NAME volume_diffusion_shortened_step_keeps_solve
     -P ${CMAKE_CURRENT_SOURCE_DIR}/timer_calls.cmake)
 set_tests_properties(volume_diffusion_shortened_step_keeps_solve PROPERTIES
   FIXTURES_SETUP vd_shortened_step)
-add_test(NAME volume_diffusion_shortened_step_unchanged
-  COMMAND compare_metrics vd_shortened_step/metrics.csv
-    ${CMAKE_CURRENT_SOURCE_DIR}/reference/vd_shortened_step_2d_metrics.csv
-    2e-4 ${TIMING_COLUMNS} transport_iterations volume_change
-    volume_correction_speed neck_curvature
-    volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)
-set_tests_properties(volume_diffusion_shortened_step_unchanged PROPERTIES
-  FIXTURES_REQUIRED vd_shortened_step)
+metrics_unchanged(volume_diffusion_shortened_step_unchanged
+  vd_shortened_step vd_shortened_step_2d_metrics.csv 2e-4
+  transport_iterations volume_change volume_correction_speed neck_curvature
+  volume_diffusion_mechanics_iterations volume_diffusion_xi_iterations)

@@ -236,9 +236,7 @@ namespace levelsinter
       "from the nodes, and no node of the coarse levels came within the band "
       "width of these particles. Raise 'Mesh refinement/Minimum level' (its "
       "cells are " +
-      std::to_string((scene.domain.upper_corner[0] -
-                      scene.domain.lower_corner[0]) /
-                     scene.domain.subdivisions[0] /
+      std::to_string(scene.domain.coarse_cell_size() /
                      std::pow(2., scene.refinement.min_level)) +
       " wide, the smallest particle radius is " +
       std::to_string(smallest_radius) + ") or widen 'Mesh refinement/Band "
