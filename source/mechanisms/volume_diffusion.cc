@@ -87,6 +87,7 @@ namespace levelsinter
     , extension(filter,
                 extension_settings<dim>(parameters, symmetry_planes),
                 timer)
+    , solve_interval(parameters.solve_interval)
   {
     // The paper's Eq. 108 on {alpha_h = 0}: the Laplace jump stays in the
     // cut cells, clear of the nodes where xi reads grad p.
@@ -107,6 +108,7 @@ namespace levelsinter
         *phases,
         mechanics_parameters);
     operator_->setup_dofs();
+    must_solve = true;
     extension.setup(alpha);
     h_min = finest_cell_size(alpha.dof_handler().get_triangulation());
   }
@@ -116,15 +118,20 @@ namespace levelsinter
   VolumeDiffusion<dim>::accept_step(const LevelSetField<dim> &)
   {
     // Delta u = dt v of the solve the step used, also when a shorter step
-    // kept it (shorten_step()).
-    operator_->advance_displacement(solved_step);
+    // kept it (shorten_step()); once per solve.
+    if (solved_in_step)
+      operator_->advance_displacement(solved_step);
+    solved_in_step = false;
+    ++steps_since_solve;
   }
 
   template <int dim>
   void
   VolumeDiffusion<dim>::reject_step()
   {
-    keep_solve = false;
+    keep_solve     = false;
+    solved_in_step = false;
+    must_solve     = true;
   }
 
   template <int dim>
@@ -149,10 +156,13 @@ namespace levelsinter
                                      const double              dt,
                                      VelocityField<dim>       &velocity)
   {
-    if (!keep_solve)
+    if (!keep_solve && (must_solve || steps_since_solve >= solve_interval))
       {
         solved_step = dt * seconds_per_time_unit;
         solve(alpha, t, solved_step);
+        solved_in_step    = true;
+        steps_since_solve = 0;
+        must_solve        = false;
       }
     keep_solve = false;
     add_diffusion_velocity(alpha, velocity);
@@ -165,6 +175,7 @@ namespace levelsinter
                                            VelocityField<dim> &velocity)
   {
     keep_solve = false;
+    must_solve = true;
     solve(alpha, t, probe_step);
     add_diffusion_velocity(alpha, velocity);
   }

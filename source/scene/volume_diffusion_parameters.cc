@@ -97,6 +97,14 @@ namespace levelsinter
                         "c h_min^3 / ((2/3)(1 + nu) C_v gamma) "
                         "(doc/numerics.md). 0: no limit (Time step and the "
                         "CFL number alone choose dt).");
+      prm.declare_entry("Elastic solve interval",
+                        "1",
+                        Patterns::Integer(1),
+                        "Solve the elastic problem at most every this many "
+                        "steps: the steps between keep its pressure and xi "
+                        "while the mesh stays (a step after a mesh "
+                        "adaptation, or after a restart, always solves). 1: "
+                        "every step.");
     }
     prm.leave_subsection();
   }
@@ -122,6 +130,7 @@ namespace levelsinter
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");
+    solve_interval   = prm.get_integer("Elastic solve interval");
     prm.leave_subsection();
 
     if (!enabled)

@@ -72,7 +72,9 @@ namespace levelsinter
                        const double              t,
                        VelocityField<dim>       &velocity) override;
 
-    /** u^n = u^{n-1} + dt v^n with the step's elastic velocity (Eq. 92). */
+    /** u^n = u^{n-1} + dt v^n with the step's elastic velocity (Eq. 92),
+     * once per elastic solve: a step that kept an earlier step's solve
+     * (`Elastic solve interval`) adds no increment. */
     void
     accept_step(const LevelSetField<dim> &alpha) override;
 
@@ -168,6 +170,13 @@ namespace levelsinter
     // next add_velocity() keeps that solve (shorten_step()).
     double       solved_step          = 0;
     bool         keep_solve           = false;
+    // `Elastic solve interval`, the accepted steps since the last solve,
+    // whether the current step solved, and whether the next step must
+    // (no solve on the current DoFs yet).
+    const unsigned int solve_interval;
+    unsigned int       steps_since_solve = 0;
+    bool               solved_in_step    = false;
+    bool               must_solve        = true;
     unsigned int mechanics_iterations = 0;
     unsigned int xi_iterations        = 0;
     bool         warned_unsourced     = false;

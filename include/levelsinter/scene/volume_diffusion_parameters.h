@@ -56,5 +56,8 @@ namespace levelsinter
     // the time step is kept below (VolumeDiffusion::time_step_limit());
     // 0: no limit.
     double       time_step_factor = 0.5;
+    // Steps that share one elastic solve while the mesh stays (1: every
+    // step solves).
+    unsigned int solve_interval   = 1;
   };
 } // namespace levelsinter
