@@ -297,6 +297,43 @@ grains_check(grains_equilibrium_2d_sharp_angle grains_equilibrium_2d_sharp
 grains_equilibrium_studies(_sharp 0.01 5
   --set "Grain boundaries/Triple-line kink width=2")
 
+# --- Settling and the axisymmetric pair (issue 28, fifth increment;
+# doc/validation.md, "The sharp triple-line condition: settling, the
+# axisymmetric pair") ------------------------------------------------------
+# grains_equilibrium_axisymmetric.prm (two spheres, sharp condition) at
+# R/h = 16, 1 and 2 ranks, 10 steps: measured largest relative difference
+# 4.1e-5, in volume_change and grain_volume_change_max (about 5e-7, the
+# volume correction's residual; 2e-11 apart), 8.5e-8 in the other
+# columns; limit 1e-4. The contact law (3D form) at every step: measured
+# 6.1e-12 (as grains_two_axisymmetric_law).
+set(GRAINS_AXISYMMETRIC_R16
+  --set "Mesh refinement/Maximum level=4"
+  --set "Level set/Filter thickness=0.094"
+  --set "Mesh refinement/Band width=0.062")
+ranks_agree(grains_equilibrium_axisymmetric grains_equilibrium_axisymmetric
+  ${GRAIN_SCENES}/grains_equilibrium_axisymmetric.prm 1e-4
+  "surface_diffusion_iterations;transport_iterations"
+  ${GRAINS_AXISYMMETRIC_R16}
+  --set "Time/Maximum steps=10" --set "Output/Metrics interval=1"
+  --set "Output/Progress interval=0")
+grains_check(grains_equilibrium_axisymmetric_law
+  grains_equilibrium_axisymmetric_np1 law grains_equilibrium_axisymmetric_np1
+  1 1 3 1e-9)
+# The relaxing pair against the exact truncated spheres (the run's solid
+# volume), R/h = 16 to t = 0.005 (215 steps, 10 s CPU in the timed
+# sections): at the 29 rows with t >= 0.003 measured R, a, d within 2.7,
+# 1.5, 5.7 % and psi 72.6 to 139.0 degrees, mean 118.8 (120: a single
+# row's fit scatters); limits 8 % and 5 degrees on the mean. It fails
+# when the pair merges or loses its grain boundary: the rigid centres
+# drift apart (+24 % over these rows) and the pair is dropped once they
+# are 10 % beyond touching, at t = 0.0072 (doc/validation.md).
+grains_run(grains_equilibrium_axisymmetric_relaxed
+  grains_equilibrium_axisymmetric.prm 1000 ${GRAINS_AXISYMMETRIC_R16}
+  --set "Time/End time=0.005" --set "Output/Metrics interval=5")
+grains_check(grains_equilibrium_axisymmetric_settled
+  grains_equilibrium_axisymmetric_relaxed settled
+  grains_equilibrium_axisymmetric_relaxed 1 3 0.003 0.08 5)
+
 # --- The 27-grain packing (grains_packing_27_3d.prm) ----------------------
 # 2 steps at h = 0.05 on 1 and 2 ranks (about 30 s CPU, 3 min wall at the
 # session's load): measured largest relative difference 5.8e-9, limit
