@@ -61,6 +61,20 @@ add_test(NAME volume_diffusion_cylinder_mode2_2d COMMAND ${SD_VALIDATE}
   --band-width 0.118 ${VD_CYLINDER} --max-rate-error 0.06
   --max-volume-change 3e-4)
 
+# vd_elastic_solves_test(NAME DIRECTORY OUTPUT CALLS ARGS...): the two
+# grains with ARGS must print OUTPUT and solve the elastic problem CALLS
+# times (timer_calls.cmake).
+function(vd_elastic_solves_test name directory output calls)
+  # Quoted, ARGN keeps an escaped \; inside an argument.
+  set(command "$<TARGET_FILE:levelsinter>;--overwrite;${VD_GRAINS};${ARGN}")
+  list(APPEND command --set "Output/Field formats=none"
+    --set "Output/Directory=${directory}")
+  add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} "-DCOMMAND=${command}"
+    "-DOUTPUT=${output}" -DDIRECTORY=${directory}
+    "-DSECTION=volume diffusion: elastic solve" -DCALLS=${calls}
+    -P ${CMAKE_CURRENT_SOURCE_DIR}/timer_calls.cmake)
+endfunction()
+
 # A step taken again shorter keeps the elastic solve (VolumeDiffusion::
 # shorten_step(): with Delta u = dt v the elastic pressure does not depend
 # on dt). The two grains with a translation that jumps from 0 to 30 (about
@@ -72,13 +86,11 @@ add_test(NAME volume_diffusion_cylinder_mode2_2d COMMAND ${SD_VALIDATE}
 # not compared: the volume change and correction speed (differences of
 # nearly equal volumes, 1.4e-3 and 1.6e-3 relative of values near 1e-6),
 # the neck curvature (a second derivative, 1.2e-3), times and iterations.
-add_test(NAME volume_diffusion_shortened_step_keeps_solve
-  COMMAND ${CMAKE_COMMAND}
-    "-DCOMMAND=$<TARGET_FILE:levelsinter>;--overwrite;${VD_GRAINS};--set;Velocity/Type=expression;--set;Velocity/Expression=U*(t < 0.004 ? 0 : 1)\\; 0;--set;Velocity/Expression constants=U=30;--set;Time/End time=0.0052;--set;Output/Field formats=none;--set;Output/Directory=vd_shortened_step"
-    "-DOUTPUT=done: 14 steps.*2 step\\(s\\) computed again"
-    -DDIRECTORY=vd_shortened_step
-    "-DSECTION=volume diffusion: elastic solve" -DCALLS=15
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/timer_calls.cmake)
+vd_elastic_solves_test(volume_diffusion_shortened_step_keeps_solve
+  vd_shortened_step "done: 14 steps.*2 step\\(s\\) computed again" 15
+  --set "Velocity/Type=expression"
+  --set "Velocity/Expression=U*(t < 0.004 ? 0 : 1)\\; 0"
+  --set "Velocity/Expression constants=U=30" --set "Time/End time=0.0052")
 set_tests_properties(volume_diffusion_shortened_step_keeps_solve PROPERTIES
   FIXTURES_SETUP vd_shortened_step)
 metrics_unchanged(volume_diffusion_shortened_step_unchanged
@@ -91,10 +103,7 @@ metrics_unchanged(volume_diffusion_shortened_step_unchanged
 # The two grains to t = 0.02: 10 steps, 6 elastic solves (the first step's
 # speed probe and every second step) where interval 1 takes 11. The neck
 # at t = 0.02 is 0.0792 against 0.0799 (measured, 27 Nov 2026).
-add_test(NAME volume_diffusion_solve_interval_keeps_solve
-  COMMAND ${CMAKE_COMMAND}
-    "-DCOMMAND=$<TARGET_FILE:levelsinter>;--overwrite;${VD_GRAINS};--set;Volume diffusion/Elastic solve interval=2;--set;Time/End time=0.02;--set;Output/Field formats=none;--set;Output/Directory=vd_solve_interval"
-    "-DOUTPUT=done: 10 steps"
-    -DDIRECTORY=vd_solve_interval
-    "-DSECTION=volume diffusion: elastic solve" -DCALLS=6
-    -P ${CMAKE_CURRENT_SOURCE_DIR}/timer_calls.cmake)
+vd_elastic_solves_test(volume_diffusion_solve_interval_keeps_solve
+  vd_solve_interval "done: 10 steps" 6
+  --set "Volume diffusion/Elastic solve interval=2"
+  --set "Time/End time=0.02")
