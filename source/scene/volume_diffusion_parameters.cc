@@ -78,6 +78,16 @@ namespace levelsinter
                         "interface: linear (with its normal derivative, "
                         "second order in h) or constant (Eq. 111 as in the "
                         "paper, an O(lambda) error).");
+      prm.declare_entry("Pressure gradient",
+                        "nodal",
+                        Patterns::Selection("nodal|recovered"),
+                        "grad p at the nodes where xi is read: nodal (the "
+                        "cells' gradients at the vertex, averaged) or "
+                        "recovered (a lumped L2 projection over the solid "
+                        "part of the cells, with cut-cell quadrature; it "
+                        "reads no atmosphere and allows Interior offset = "
+                        "0). doc/numerics.md, \"Volume diffusion: a "
+                        "recovered gradient\".");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -119,6 +129,7 @@ namespace levelsinter
     reference_radius = prm.get_double("Reference radius");
     interior_offset  = prm.get_double("Interior offset");
     linear_extrapolation = prm.get("Extrapolation") == "linear";
+    recovered_gradient   = prm.get("Pressure gradient") == "recovered";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");
@@ -136,8 +147,9 @@ namespace levelsinter
            "C_v = (1 - f) Omega D_v / kT must be positive");
     if (time_unit == TimeUnit::reduced && reference_radius == 0)
       fail("Reference radius", "must be positive when Time unit = reduced");
-    if (interior_offset <= 0)
-      fail("Interior offset", "must be positive");
+    if (interior_offset <= 0 && !recovered_gradient)
+      fail("Interior offset",
+           "must be positive (0 only with Pressure gradient = recovered)");
     if (time_step_factor > 1)
       fail("Time step factor",
            "must be at most 1 (1 is the measured stability limit itself)");
