@@ -104,9 +104,11 @@ add_test(NAME volume_diffusion_recovered_gradient_lambda3_2d
   --set "Volume diffusion/Time step factor=0" --max-rate-error 0.02)
 # 1 and 2 ranks, the two grains' 10 steps of the ranks_agree check above with
 # the recovered gradient (its sums over the cut cells are added across
-# ranks like the nodal ones). Limit as the nodal path's; not yet run (the
-# build with the entry did not finish in the session that added it).
-ranks_agree(volume_diffusion_recovered vd_recovered ${VD_GRAINS} 2e-5
+# ranks). Measured (the same code switched by an environment variable, the
+# build with the entry did not finish in the session that added it): neck
+# 9.3e-6, neck curvature 4.3e-5 (a second derivative; the nodal check's
+# 2e-5 fails on it), solid volume 1.7e-9; checked at 1e-4.
+ranks_agree(volume_diffusion_recovered vd_recovered ${VD_GRAINS} 1e-4
   "transport_iterations;cells;dofs;volume_change;max_velocity;volume_correction_speed;volume_diffusion_mechanics_iterations;volume_diffusion_xi_iterations"
   --set "Volume diffusion/Pressure gradient=recovered"
   --set "Time/Maximum steps=10" --set "Output/Metrics interval=1")
