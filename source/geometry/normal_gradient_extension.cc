@@ -10,6 +10,7 @@
 #include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/geometry/normal_gradient_extension.h>
+#include <levelsinter/geometry/recovered_gradient.h>
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/same_cell.h>
@@ -81,6 +82,10 @@ namespace levelsinter
 
     // grad p evaluated at the vertices, cell by cell: the average over the
     // cells at a node is a centred difference on a uniform patch (O(h^2)).
+    // Or recovered over the solid part of the cells (Settings).
+    if (settings.recovered_gradient)
+      add_solid_gradient_projection<dim>(
+        level_set, field_dofs, component, field, count, gradient_sum);
     const Quadrature<dim> vertices(level_set.fe().get_unit_support_points());
     FEValues<dim>         field_values(field_dofs.get_fe(),
                                vertices,
@@ -97,9 +102,12 @@ namespace levelsinter
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          field_values.reinit(same_cell(cell, field_dofs));
-          field_values[pressure].get_function_gradients(field, gradients);
           cell->get_dof_indices(indices);
+          if (!settings.recovered_gradient)
+            {
+              field_values.reinit(same_cell(cell, field_dofs));
+              field_values[pressure].get_function_gradients(field, gradients);
+            }
           const double lambda = (settings.interior_offset - 1) * h_min +
                                 cell_size(cell);
           // Q1: local DoF v sits at vertex v, the v-th support point.
@@ -108,6 +116,8 @@ namespace levelsinter
               const auto i = indices[v];
               if (filter.distance(level_set.alpha()(i)) >= -lambda)
                 excluded(i) += 1;
+              if (settings.recovered_gradient)
+                continue;
               count(i) += 1;
               for (unsigned int c = 0; c < dim; ++c)
                 gradient_sum[c](i) += gradients[v][c];

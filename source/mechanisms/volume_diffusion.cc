@@ -47,6 +47,7 @@ namespace levelsinter
       typename NormalGradientExtension<dim>::Settings s;
       s.interior_offset      = p.interior_offset;
       s.linear_extrapolation = p.linear_extrapolation;
+      s.recovered_gradient   = p.recovered_gradient;
       s.solver_tolerance     = p.solver_tolerance;
       s.max_iterations       = p.max_iterations;
       s.symmetry_boundaries  = symmetry_planes;

@@ -78,6 +78,15 @@ namespace levelsinter
                         "interface: linear (with its normal derivative, "
                         "second order in h) or constant (Eq. 111 as in the "
                         "paper, an O(lambda) error).");
+      prm.declare_entry("Pressure gradient",
+                        "nodal",
+                        Patterns::Selection("nodal|recovered"),
+                        "grad p at the nodes where xi is read: nodal (the "
+                        "cells' gradients at the vertex, averaged) or "
+                        "recovered (a lumped L2 projection over the solid "
+                        "part of the cells, with cut-cell quadrature: it "
+                        "reads no atmosphere). doc/numerics.md, \"Volume "
+                        "diffusion: a recovered gradient\".");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -127,6 +136,7 @@ namespace levelsinter
     reference_radius = prm.get_double("Reference radius");
     interior_offset  = prm.get_double("Interior offset");
     linear_extrapolation = prm.get("Extrapolation") == "linear";
+    recovered_gradient   = prm.get("Pressure gradient") == "recovered";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");

@@ -67,6 +67,12 @@ namespace levelsinter
       // xi = (g - d eta) + d eta at each node (linear extrapolation, second
       // order), or g alone (the paper's constant extension, first order).
       bool         linear_extrapolation = true;
+      // grad p at a node: the average of the cells' gradients at the vertex
+      // (false), or recovered by a lumped L2 projection over the solid part
+      // of the cells (add_solid_gradient_projection()), which reads no
+      // atmosphere and allows interior_offset = 0 (every solid node a
+      // source).
+      bool         recovered_gradient = false;
       // Normals from the distance filter^-1(alpha) (second order in h).
       bool         normals_from_distance = true;
       double       solver_tolerance      = 1e-10;
