@@ -3,7 +3,7 @@
 # volume_diffusion_cylinder_mode2_2d: R = 0.25, h = 1/128, Table 7 moduli)
 # by volume diffusion, 20 steps of a fixed dt* with the mechanism's own
 # limit off, for the gradient, pressure space and lambda of each trial;
-# one row per trial in doc/validation_data/sharp_vd_recovered_gradient_2d.csv
+# one row per trial in doc/validation_data/archive/sharp_vd_recovered_gradient_2d.csv
 # (the driver's columns and the case). doc/validation.md, "Sharp
 # interfaces: a recovered gradient for xi".
 # usage: scripts/vd_gradient_trials.sh BUILD_DIR OUT.csv
