@@ -71,11 +71,14 @@ namespace levelsinter
   template <int dim>
   void
   SurfaceDiffusion<dim>::add_velocity(const LevelSetField<dim> &alpha,
-                                      const double              t,
-                                      const double              dt,
-                                      VelocityField<dim>       &velocity)
+                                      const double,
+                                      const double        dt,
+                                      VelocityField<dim> &velocity)
   {
     update_potential(alpha);
+    if (explicit_motion.normal_speed)
+      solver.set_explicit_motion(&explicit_motion.normal_speed(),
+                                 explicit_motion.stabilisation());
     iterations = solver.solve(alpha, mobility, dt, previous_velocity);
     add_normal_velocity(alpha, velocity);
   }
