@@ -31,25 +31,6 @@ namespace levelsinter
     using Vector       = TrilinosWrappers::MPI::Vector;
     using BlockVector  = TrilinosWrappers::MPI::BlockVector;
 
-    // x = M^-1 f for a mass matrix M by Jacobi-preconditioned CG, which
-    // converges in a number of steps independent of h; the iterations.
-    unsigned int
-    mass_solve(const SparseMatrix &mass,
-               Vector             &x,
-               const Vector       &f,
-               const double        tolerance,
-               const unsigned int  max_iterations)
-    {
-      if (f.l2_norm() == 0)
-        return 0;
-      TrilinosWrappers::PreconditionJacobi jacobi;
-      jacobi.initialize(mass);
-      SolverControl    control(max_iterations, tolerance * f.l2_norm());
-      SolverCG<Vector> cg(control);
-      cg.solve(mass, x, f, jacobi);
-      return control.last_step();
-    }
-
     // The 2x2 block system [[kk, kv], [vk, vv]] acting on (kappa, w).
     struct BlockSystem
     {
@@ -182,8 +163,7 @@ namespace levelsinter
     const auto    &owned = level_set.locally_owned();
     for (auto *m : {&kk, &kv, &vk, &vv, &tangential_shift, &isotropic_shift})
       m->reinit(level_set.sparsity_pattern());
-    for (auto *v : {&rhs, &rhs_at_rest, &velocity_rhs})
-      v->reinit(owned, comm);
+    rhs.reinit(owned, comm);
     kappa.reinit(owned, level_set.locally_relevant(), comm);
     velocity.reinit(owned, level_set.locally_relevant(), comm);
   }
@@ -204,8 +184,7 @@ namespace levelsinter
                                          settings.symmetry_boundaries);
     for (auto *m : {&kk, &kv, &vk, &vv})
       *m = 0;
-    rhs         = 0;
-    rhs_at_rest = 0;
+    rhs = 0;
 
     const bool   coupled = settings.coupled && dt > 0;
     const double b       = std::sqrt(coefficient * dt);
@@ -214,8 +193,6 @@ namespace levelsinter
     const double kv_factor = coupled ? -b : 0.;
     const double vk_factor = coupled ? b : coefficient;
     const double lag       = previous_velocity.size() > 0 ? dt : 0.;
-    // The explicit motion of the same step (set_explicit_motion()).
-    const double moved = explicit_speed ? dt : 0.;
 
     const QGauss<dim>  quadrature(2);
     FEValues<dim>      fe_values(level_set.fe(),
@@ -226,11 +203,11 @@ namespace levelsinter
     const unsigned int n  = level_set.fe().dofs_per_cell;
     const unsigned int nq = quadrature.size();
     FullMatrix<double> m_kk(n, n), m_kv(n, n), m_vk(n, n), m_vv(n, n);
-    dealii::Vector<double>               local_rhs(n), local_rhs_at_rest(n);
+    dealii::Vector<double>               local_rhs(n);
     std::vector<types::global_dof_index> indices(n);
     std::vector<double>                  alpha_values(nq);
     std::vector<Tensor<1, dim>> alpha_gradients(nq), lag_gradients(nq),
-      normal_gradients(nq), moved_gradients(nq);
+      normal_gradients(nq);
     std::vector<double> divergence(nq), radial_normal(nq), mu(nq);
 
     // DoFs no band cell touches get kappa = v_s = 0 (identity rows).
@@ -249,8 +226,6 @@ namespace levelsinter
           fe_values.get_function_gradients(alpha, alpha_gradients);
           if (lag > 0)
             fe_values.get_function_gradients(previous_velocity, lag_gradients);
-          if (moved > 0)
-            fe_values.get_function_gradients(*explicit_speed, moved_gradients);
           // div N, on a body of revolution with the azimuthal N_r / r.
           fe_values.get_function_values(normals[0], radial_normal);
           for (unsigned int q = 0; q < nq; ++q)
@@ -273,8 +248,7 @@ namespace levelsinter
           m_kv = 0;
           m_vk = 0;
           m_vv = 0;
-          local_rhs         = 0;
-          local_rhs_at_rest = 0;
+          local_rhs = 0;
           for (unsigned int q = 0; q < nq; ++q)
             {
               // grad d = grad alpha / f'(d): the filter undone, |grad d| = 1
@@ -292,11 +266,8 @@ namespace levelsinter
               // Clipped so that a badly reinitialised cell cannot make the
               // weights vanish or explode.
               const double g = std::clamp(grad_d.norm(), 0.2, 5.);
-              const double A = std::clamp((grad_d - lag * lag_gradients[q] -
-                                           moved * moved_gradients[q])
-                                            .norm(),
-                                          0.2,
-                                          5.);
+              const double A =
+                std::clamp((grad_d - lag * lag_gradients[q]).norm(), 0.2, 5.);
               // In the scene's measure: on a body of revolution the forms
               // integrated by parts (Eq. 80 and the surface Laplacian) are
               // the 3D ones, with no further term (doc/numerics.md).
@@ -319,22 +290,12 @@ namespace levelsinter
                     }
                   // kappa = div N (Eq. 80 at dt = 0), not integrated by
                   // parts: the band has no boundary term to lose.
-                  local_rhs_at_rest(i) += divergence[q] * phi_i * JxW;
-                  // The explicit motion's part of Eq. 80: kappa of
-                  // alpha - dt |grad alpha| v_e, -dt div(grad v_e / A)
-                  // integrated by parts.
-                  local_rhs(i) +=
-                    moved * (moved_gradients[q] * grad_i) * JxW / A;
+                  local_rhs(i) += divergence[q] * phi_i * JxW;
                 }
             }
-          local_rhs += local_rhs_at_rest;
           cell->get_dof_indices(indices);
           const auto &constraints = level_set.constraints();
           constraints.distribute_local_to_global(m_kk, local_rhs, indices, kk, rhs);
-          if (stabilisation_term > 0)
-            constraints.distribute_local_to_global(local_rhs_at_rest,
-                                                   indices,
-                                                   rhs_at_rest);
           constraints.distribute_local_to_global(m_vv, indices, vv);
           // Off-diagonal blocks: no diagonal entries on constrained rows.
           constraints.distribute_local_to_global(m_kv, indices, indices, kv);
@@ -345,7 +306,6 @@ namespace levelsinter
     for (auto *m : {&kk, &kv, &vk, &vv})
       m->compress(VectorOperation::add);
     rhs.compress(VectorOperation::add);
-    rhs_at_rest.compress(VectorOperation::add);
     touched.compress(VectorOperation::add);
     for (const auto i : level_set.locally_owned())
       if (touched(i) == 0)
@@ -374,31 +334,15 @@ namespace levelsinter
                                    const double              dt,
                                    const Vector &previous_velocity)
   {
-    // The semi-implicit term's b joins C in the matrix; its kappa^n part
-    // is on the v_s row's right-hand side.
-    const double mobility = coefficient + (dt > 0 ? stabilisation_term : 0.);
-    assemble(level_set, alpha, mobility, dt, previous_velocity);
+    assemble(level_set, alpha, coefficient, dt, previous_velocity);
     TimerOutput::Scope scope(timer, "curvature solve");
     // CPU time summed over the ranks (deal.II's Timer with a communicator).
     Timer        cpu_timer(level_set.dof_handler().get_communicator());
     unsigned int iterations = 0;
-    velocity_rhs            = 0;
-    if (dt > 0 && stabilisation_term > 0)
-      {
-        // b L kappa^n, M kappa^n = (div N, psi). In the v_s row's scaling
-        // vk is mobility L (decoupled) or sqrt(mobility dt) L with the row
-        // divided by sqrt(mobility / dt): b / mobility vk either way.
-        Vector kappa_at_rest(rhs_at_rest);
-        kappa_at_rest = 0;
-        mass_solve(
-          kk, kappa_at_rest, rhs_at_rest, 1e-10, settings.max_iterations);
-        vk.vmult(velocity_rhs, kappa_at_rest);
-        velocity_rhs *= stabilisation_term / mobility;
-      }
     if (settings.coupled && dt > 0 && settings.direct)
-      iterations = solve_direct(level_set, std::sqrt(mobility / dt));
+      iterations = solve_direct(level_set, std::sqrt(coefficient / dt));
     else if (settings.coupled && dt > 0)
-      iterations = solve_coupled(level_set, std::sqrt(mobility / dt));
+      iterations = solve_coupled(level_set, std::sqrt(coefficient / dt));
     else
       iterations = solve_decoupled(level_set);
     solve_cpu_time = cpu_timer.cpu_time();
@@ -415,7 +359,6 @@ namespace levelsinter
     BlockVector    solution({owned, owned}, comm);
     BlockVector    block_rhs({owned, owned}, comm);
     block_rhs.block(0) = rhs;
-    block_rhs.block(1) = velocity_rhs;
 
     // M + b L and M + b K_A from the blocks (kv holds -b K_A, vk b L), on
     // the same pattern; identity rows outside the band come from M.
@@ -483,10 +426,7 @@ namespace levelsinter
 
     Vector full_rhs(owned2, comm), full_solution(owned2, comm);
     for (const auto i : owned)
-      {
-        full_rhs(i)     = rhs(i);
-        full_rhs(i + n) = velocity_rhs(i);
-      }
+      full_rhs(i) = rhs(i);
     full_rhs.compress(VectorOperation::insert);
     SolverControl                  control;
     TrilinosWrappers::SolverDirect direct(control);
@@ -514,15 +454,24 @@ namespace levelsinter
     const auto    &constraints = level_set.constraints();
     unsigned int   iterations  = 0;
 
-    // Two mass-matrix solves.
-    iterations +=
-      mass_solve(kk, k, rhs, settings.tolerance, settings.max_iterations);
+    // Two mass-matrix solves: Jacobi-preconditioned CG converges in a
+    // number of steps independent of h.
+    auto mass_solve = [&](const SparseMatrix &m, Vector &x, const Vector &f) {
+      if (f.l2_norm() == 0)
+        return;
+      TrilinosWrappers::PreconditionJacobi jacobi;
+      jacobi.initialize(m);
+      SolverControl      control(settings.max_iterations,
+                            settings.tolerance * f.l2_norm());
+      SolverCG<Vector> cg(control);
+      cg.solve(m, x, f, jacobi);
+      iterations += control.last_step();
+    };
+    mass_solve(kk, k, rhs);
     kappa = ghosted_from_owned(k, constraints, level_set.locally_relevant());
     vk.vmult(vrhs, k);
     vrhs *= -1;
-    vrhs += velocity_rhs;
-    iterations +=
-      mass_solve(vv, v, vrhs, settings.tolerance, settings.max_iterations);
+    mass_solve(vv, v, vrhs);
     velocity = ghosted_from_owned(v, constraints, level_set.locally_relevant());
     return iterations;
   }

@@ -27,27 +27,6 @@ namespace levelsinter
                                            scene.refinement.max_level,
                                            timer,
                                            scene.phase_law));
-    // Volume diffusion is built here, before surface diffusion, when the
-    // surface-diffusion solve takes its motion semi-implicitly: its speed
-    // must be ready when that solve runs (SceneParameters requires surface
-    // diffusion then).
-    std::unique_ptr<VolumeDiffusion<dim>> volume_diffusion;
-    if (scene.volume_diffusion.enabled)
-      volume_diffusion = std::make_unique<VolumeDiffusion<dim>>(
-        scene.volume_diffusion,
-        scene.seconds_per_time_unit(),
-        scene.viscous_flow,
-        scene.materials,
-        scene.phase_law,
-        scene.domain.symmetry_planes,
-        filter,
-        scene.refinement.max_level,
-        timer);
-    const VolumeDiffusion<dim> *semi_implicit =
-      scene.volume_diffusion.stabilisation > 0 ? volume_diffusion.get() :
-                                                 nullptr;
-    if (semi_implicit)
-      mechanisms.push_back(std::move(volume_diffusion));
     if (scene.surface_diffusion.enabled)
       {
         auto surface_diffusion = std::make_unique<SurfaceDiffusion<dim>>(
@@ -66,12 +45,6 @@ namespace levelsinter
             scene.seconds_per_time_unit(),
             *surface_diffusion,
             timer);
-        if (semi_implicit)
-          surface_diffusion->set_explicit_motion(
-            {[semi_implicit]() -> const TrilinosWrappers::MPI::Vector & {
-               return semi_implicit->normal_speed();
-             },
-             [semi_implicit]() { return semi_implicit->stabilisation(); }});
         mechanisms.push_back(std::move(surface_diffusion));
         if (grain_boundaries)
           mechanisms.push_back(std::move(grain_boundaries));
@@ -80,8 +53,17 @@ namespace levelsinter
     // elastic-solid law. With surface diffusion as well (Eq. 118,
     // Algorithm 4) the time loop adds both velocities, transports once and
     // corrects the volume after both.
-    if (volume_diffusion)
-      mechanisms.push_back(std::move(volume_diffusion));
+    if (scene.volume_diffusion.enabled)
+      mechanisms.push_back(std::make_unique<VolumeDiffusion<dim>>(
+        scene.volume_diffusion,
+        scene.seconds_per_time_unit(),
+        scene.viscous_flow,
+        scene.materials,
+        scene.phase_law,
+        scene.domain.symmetry_planes,
+        filter,
+        scene.refinement.max_level,
+        timer));
     // Last: it corrects the volume whatever the others moved.
     if (scene.volume_correction.enabled)
       mechanisms.push_back(std::make_unique<VolumeCorrection<dim>>(

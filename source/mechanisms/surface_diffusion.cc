@@ -76,9 +76,6 @@ namespace levelsinter
                                       VelocityField<dim> &velocity)
   {
     update_potential(alpha);
-    if (explicit_motion.normal_speed)
-      solver.set_explicit_motion(&explicit_motion.normal_speed(),
-                                 explicit_motion.stabilisation());
     iterations = solver.solve(alpha, mobility, dt, previous_velocity);
     add_normal_velocity(alpha, velocity);
   }

@@ -3,7 +3,6 @@
 #include <deal.II/dofs/dof_tools.h>
 
 #include <levelsinter/level_set/cell_size.h>
-#include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/mechanisms/volume_diffusion.h>
 
 #include <iostream>
@@ -76,18 +75,15 @@ namespace levelsinter
     , mechanics_parameters(mechanics)
     , phases(make_phase_law<dim>(law, mechanics, materials))
     , probe_step(materials.fluid_viscosity / (1e-5 * law.shear_modulus))
-    , stiffness([&]() {
+    , limit_per_h3([&]() {
       const double G = law.shear_modulus, K = law.bulk_modulus;
       const double nu = (3 * K - 2 * G) / (2 * (3 * K + G));
-      return 2. / 3 * (1 + nu) * coefficient * materials.surface_tension;
+      // s_n = (2/3)(1 + nu) C_v gamma n (n^2 - 1) / R^3 (doc/numerics.md):
+      // the decay rate of the finest modes, n ~ R / h, is proportional to
+      // (2/3)(1 + nu) C_v gamma / h^3.
+      return parameters.time_step_factor * measured_limit /
+             (2. / 3 * (1 + nu) * coefficient * materials.surface_tension);
     }())
-    // s_n = stiffness n (n^2 - 1) / R^3: the decay rate of the finest
-    // modes, n ~ R / h, is proportional to stiffness / h^3. The
-    // semi-implicit term lifts the limit.
-    , limit_per_h3(parameters.stabilisation > 0 ?
-                     0. :
-                     parameters.time_step_factor * measured_limit / stiffness)
-    , stabilisation_factor(parameters.stabilisation)
     , timer(timer)
     , extension(filter,
                 extension_settings<dim>(parameters, symmetry_planes),
@@ -170,18 +166,6 @@ namespace levelsinter
         must_solve        = false;
       }
     keep_solve = false;
-    if (stabilisation_factor > 0)
-      {
-        // For the surface-diffusion solve that follows (normal_speed()).
-        TrilinosWrappers::MPI::Vector owned(
-          alpha.locally_owned(), alpha.dof_handler().get_communicator());
-        const auto &xi = extension.normal_gradient();
-        for (const auto i : alpha.locally_owned())
-          owned(i) = -coefficient * xi(i);
-        speed = ghosted_from_owned(owned,
-                                   alpha.constraints(),
-                                   alpha.locally_relevant());
-      }
     add_diffusion_velocity(alpha, velocity);
   }
 

@@ -288,13 +288,6 @@ namespace levelsinter
                     "diffusion: explicit stability limit\")";
             warnings.push_back(what.str());
           }
-        // The semi-implicit term lives in the kappa / v_s system.
-        if (volume_diffusion.stabilisation > 0 && !surface_diffusion.enabled)
-          fail_entry("Volume diffusion/Semi-implicit stabilisation",
-                     "needs 'Surface diffusion/Enabled = true': the "
-                     "implicit term is solved in the surface-diffusion "
-                     "system (a scene without surface diffusion may give "
-                     "it a negligible Coefficient)");
         // Surface and volume diffusion together (Eq. 118, Algorithm 4) run
         // in one time: seconds, or the one reduced time a section names.
         if (surface_diffusion.enabled &&

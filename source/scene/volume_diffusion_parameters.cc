@@ -114,17 +114,6 @@ namespace levelsinter
                         "while the mesh stays (a step after a mesh "
                         "adaptation, or after a restart, always solves). 1: "
                         "every step.");
-      prm.declare_entry("Semi-implicit stabilisation",
-                        "0",
-                        Patterns::Double(0),
-                        "beta of the semi-implicit volume-diffusion step: "
-                        "the surface-diffusion solve of the step sees the "
-                        "interface after the volume-diffusion motion and "
-                        "adds b Delta_s (kappa^{n+1} - kappa^n) to v_s, with "
-                        "b = beta (2/3)(1 + nu) C_v gamma h_min, which damps "
-                        "the fine modes that make v = -C_v xi N unstable "
-                        "beyond its explicit limit (doc/numerics.md). Needs "
-                        "Surface diffusion/Enabled = true. 0: explicit.");
     }
     prm.leave_subsection();
   }
@@ -152,7 +141,6 @@ namespace levelsinter
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");
     solve_interval   = prm.get_integer("Elastic solve interval");
-    stabilisation    = prm.get_double("Semi-implicit stabilisation");
     prm.leave_subsection();
 
     if (!enabled)

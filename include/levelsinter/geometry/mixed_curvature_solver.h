@@ -138,25 +138,6 @@ namespace levelsinter
       potential = mu;
     }
 
-    /**
-     * A normal speed v_e (ghosted, on the level set's DoFs; nullptr: none)
-     * that moves the interface explicitly in the same step (volume
-     * diffusion, Eq. 118), and the mobility b of the semi-implicit term.
-     * From the next solve with dt > 0 on, kappa is that of
-     * alpha^n - dt |grad alpha| (v_s + v_e) (Eq. 79-81 with the coupled
-     * velocity) and v_s = C Delta_s kappa + b Delta_s (kappa - kappa^n),
-     * kappa^n the curvature at dt = 0: a term that vanishes with dt and
-     * damps the fine modes of the explicit motion (doc/numerics.md,
-     * "Semi-implicit volume diffusion"). The vector must live until the
-     * solve.
-     */
-    void
-    set_explicit_motion(const Vector *speed, const double stabilisation)
-    {
-      explicit_speed      = speed;
-      stabilisation_term  = stabilisation;
-    }
-
   private:
     void
     assemble(const LevelSetField<dim> &level_set,
@@ -182,15 +163,11 @@ namespace levelsinter
     // M + b L, M + b K_A of the Schur-complement approximation.
     TrilinosWrappers::SparseMatrix kk, kv, vk, vv, tangential_shift,
       isotropic_shift;
-    // The kappa row's right-hand side, and its part without the dt terms
-    // (kappa^n of the semi-implicit term); the v_s row's right-hand side.
-    Vector                         rhs, rhs_at_rest, velocity_rhs;
+    Vector                         rhs;
     Vector                         kappa;
     Vector                         velocity;
     std::array<Vector, dim>        normals;
     const Vector                  *potential = nullptr;
-    const Vector                  *explicit_speed     = nullptr;
-    double                         stabilisation_term = 0;
 
   public:
     /** CPU seconds of the last linear solve, summed over the ranks. */

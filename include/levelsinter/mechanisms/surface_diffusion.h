@@ -103,25 +103,6 @@ namespace levelsinter
       const std::function<void(const LevelSetField<dim> &,
                                TrilinosWrappers::MPI::Vector &)> &source);
 
-    /**
-     * A mechanism that moves the interface explicitly in the same step and
-     * has its normal speed ready before this one's solve (volume diffusion,
-     * Eq. 118): each solve then takes kappa after that motion too and adds
-     * the semi-implicit term b Delta_s (kappa^{n+1} - kappa^n) with
-     * b = stabilisation() (MixedCurvatureSolver::set_explicit_motion()).
-     */
-    struct ExplicitMotion
-    {
-      std::function<const TrilinosWrappers::MPI::Vector &()> normal_speed;
-      std::function<double()>                                stabilisation;
-    };
-
-    void
-    set_explicit_motion(const ExplicitMotion &motion)
-    {
-      explicit_motion = motion;
-    }
-
     /** The coefficient of Delta_s kappa in the time unit of the scene. */
     double
     coefficient() const
@@ -151,7 +132,6 @@ namespace levelsinter
                        TrilinosWrappers::MPI::Vector &)>
                                   potential_source;
     TrilinosWrappers::MPI::Vector potential;
-    ExplicitMotion                explicit_motion;
     unsigned int                  iterations = 0;
   };
 } // namespace levelsinter

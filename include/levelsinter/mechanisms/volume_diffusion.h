@@ -98,8 +98,7 @@ namespace levelsinter
     /**
      * The explicit stability limit of v = -C_v xi N (measured, h^3):
      * dt <= f c_s h_min^3 / ((2/3)(1 + nu) C_v gamma), f = `Time step
-     * factor` (doc/numerics.md, "Volume diffusion"). Infinity if f = 0 or
-     * with the semi-implicit term.
+     * factor` (doc/numerics.md, "Volume diffusion"). Infinity if f = 0.
      */
     double
     time_step_limit(const LevelSetField<dim> &alpha) const override;
@@ -123,27 +122,6 @@ namespace levelsinter
       return {double(mechanics_iterations),
               double(xi_iterations),
               double(extension.unsourced_interface_cells())};
-    }
-
-    /** -C_v xi at the level-set nodes (ghosted) of the last
-     * add_velocity(); kept only with `Semi-implicit stabilisation` > 0. */
-    const TrilinosWrappers::MPI::Vector &
-    normal_speed() const
-    {
-      return speed;
-    }
-
-    /**
-     * b of the semi-implicit term b Delta_s (kappa^{n+1} - kappa^n) in the
-     * kappa / v_s solve: beta (2/3)(1 + nu) C_v gamma h_min, so that it
-     * outweighs v = -C_v xi N (rate (2/3)(1 + nu) C_v gamma k^3 for the
-     * wavenumber k) from k = 1 / (beta h_min) on (doc/numerics.md,
-     * "Semi-implicit volume diffusion").
-     */
-    double
-    stabilisation() const
-    {
-      return stabilisation_factor * stiffness * h_min;
     }
 
     /** The elastic problem of the last step (for tests and output). */
@@ -182,18 +160,12 @@ namespace levelsinter
     const ViscousFlowParameters           mechanics_parameters;
     const std::unique_ptr<PhaseLaw<dim>>  phases;
     const double                          probe_step; // seconds
-    // (2/3)(1 + nu) C_v gamma: s_n R^3 / (n (n^2 - 1)), the rate of mode n
-    // (doc/numerics.md).
-    const double                          stiffness;
-    // f c / stiffness of time_step_limit(); 0: no limit.
+    // f / ((2/3)(1 + nu) C_v gamma) of time_step_limit(); 0: no limit.
     const double                          limit_per_h3;
-    // beta of stabilisation(); 0: explicit.
-    const double                          stabilisation_factor;
     double                                h_min = 0; // after setup()
     TimerOutput                          &timer;
     std::unique_ptr<VelocityPressureOperator<dim>> operator_;
     NormalGradientExtension<dim>          extension;
-    TrilinosWrappers::MPI::Vector         speed; // normal_speed()
     // The step of the last elastic solve, in seconds, and whether the
     // next add_velocity() keeps that solve (shorten_step()).
     double       solved_step          = 0;

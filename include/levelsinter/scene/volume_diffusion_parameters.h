@@ -60,10 +60,5 @@ namespace levelsinter
     // Steps that share one elastic solve while the mesh stays (1: every
     // step solves).
     unsigned int solve_interval   = 1;
-    // beta of the semi-implicit step: the kappa / v_s solve damps the
-    // increment with b Delta_s (kappa^{n+1} - kappa^n), b = beta (2/3)
-    // (1 + nu) C_v gamma h_min (VolumeDiffusion::stabilisation()); 0: the
-    // explicit velocity alone.
-    double       stabilisation    = 0;
   };
 } // namespace levelsinter
