@@ -133,6 +133,10 @@ set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
 # that the comparison at fixed times interpolates between close rows.
 # Measured (27 Nov 2026, doc/validation.md): CFL 2 / 1 / 0.5 in 24 / 34 /
 # 50 steps, 4.4e3 s wall for the reference on 1 rank of a shared machine.
+# Added 28 Nov 2026: CFL 4 with an adaptation every step (the band then
+# holds 1 x 4 + 1 cells at 0.048) and CFL 2 with `Elastic solve interval =
+# 2`: 24 and 39 steps (those runs, like the first three, with the elastic
+# solver tolerance 1e-6 the scene had then).
 # packing_convergence_test(NAME SCENE BOX CELLS PARTICLES END TIMES
 #   ARGS...): scripts/packing_convergence.py on SCENE with PARTICLES in
 #   [0, BOX]^3 (CELLS coarse cells per axis) to END, compared at TIMES, its
@@ -154,6 +158,8 @@ function(packing_convergence_test name scene box cells particles end times)
 endfunction()
 packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
   0.9 3 packing_27_like_154_3d.csv 0.01 0.0025,0.005,0.01
+  --case "cfl4_adapt1:Time/CFL number=4;Mesh refinement/Adapt interval=1;Mesh refinement/Band width=0.048"
+  --case "cfl2_interval2:Time/CFL number=2;Mesh refinement/Band width=0.048;Volume diffusion/Elastic solve interval=2"
   --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
   --case "cfl1:Time/CFL number=1"
   --case "reference"
