@@ -7,7 +7,7 @@
 #   scripts/sharp_mode_velocity.sh BUILD_DIR OUT_DIR
 # writes OUT_DIR/sharp_mode_velocity_2d.csv (a case column first) and
 # OUT_DIR/sharp_cylinder_mode3_resolved_2d.csv, and candidate_*.csv (the
-# candidates tried first, archive/sharp_cylinder_mode3_candidates_2d.csv).
+# candidates tried first, sharp_cylinder_mode3_candidates_2d.csv).
 set -e
 build=$(realpath "$1")
 mkdir -p "$2"
