@@ -22,6 +22,12 @@ n / 2 (doc/numerics.md), sphere l (l + 2) (2 l + 1) / (2 (2 l^2 + 4 l + 3))
 (2 lam + 3)(19 lam + 16) eta_m R / (40 (lam + 1) gamma) -> 19 eta R /
 (20 gamma), Rallison 1984). Mode n = 1 is a translation (the derivation
 divides by the curvature factor c_n = 0 there).
+
+With an atmosphere of viscosity lam eta (exterior stream function
+(C r^-n + D r^(2-n)) sin(n theta), velocity and shear stress continuous,
+the normal stress jumping by the Laplace term) the cylinder's rate is
+n gamma / (2 eta R (1 + lam)) for every n (cylinder_rate_with_atmosphere):
+the scenes' lam = 1e-3 lowers the exact rate by 0.1 %.
 """
 import sympy as sp
 
@@ -90,6 +96,39 @@ def rate(dim, n):
     return sp.simplify(s * eta * R / gamma)
 
 
+def cylinder_rate_with_atmosphere(n):
+    """s_n eta R / gamma of a cylinder in an atmosphere of viscosity lam eta,
+    in polar coordinates (u_r = psi_theta / r, u_theta = -psi_r)."""
+    r, th = sp.symbols("r theta", positive=True)
+    lam = sp.symbols("lam", positive=True)
+    C, D = sp.symbols("C D")
+
+    def fields(psi, visc):
+        ur = sp.diff(psi, th) / r
+        ut = -sp.diff(psi, r)
+        lap = lambda f: (sp.diff(r * sp.diff(f, r), r) / r +
+                         sp.diff(f, th, 2) / r**2)
+        # theta-momentum: (1/r) dp/dtheta = visc (lap u)_theta, p ~ cos.
+        lap_t = lap(ut) - ut / r**2 + 2 / r**2 * sp.diff(ur, th)
+        p = sp.simplify(r * visc * lap_t / (-n * sp.sin(n * th))) * \
+            sp.cos(n * th)
+        srr = -p + 2 * visc * sp.diff(ur, r)
+        srt = visc * (r * sp.diff(ut / r, r) + sp.diff(ur, th) / r)
+        return ur, ut, srr, srt
+
+    inner = fields((A * r**n + B * r**(n + 2)) * sp.sin(n * th), eta)
+    outer = fields((C * r**(-n) + D * r**(2 - n)) * sp.sin(n * th), lam * eta)
+    t0 = sp.Rational(3, 10)
+    at = lambda e: sp.simplify(e.subs({r: R, th: t0}))
+    eqs = [at(inner[0] - outer[0]), at(inner[1] - outer[1]),
+           at(inner[3] - outer[3]),
+           at(inner[2] - outer[2] +
+              gamma * (n**2 - 1) * delta / R * sp.cos(n * th))]
+    sol = sp.solve(eqs, [A, B, C, D], dict=True)[0]
+    s = -at(inner[0].subs(sol)) / (R * delta * sp.cos(n * t0))
+    return sp.factor(sp.simplify(s * eta * R / gamma))
+
+
 if __name__ == "__main__":
     print("mode, body, s_n eta R / gamma, closed form")
     for n in (2, 3, 4):
@@ -100,3 +139,6 @@ if __name__ == "__main__":
         closed = sp.Rational(l * (l + 2) * (2 * l + 1),
                              2 * (2 * l * l + 4 * l + 3))
         print(l, "sphere", float(s), "closed form:", closed)
+    for n in (2, 3, 4):
+        print(n, "cylinder in an atmosphere of viscosity lam eta:",
+              cylinder_rate_with_atmosphere(n))

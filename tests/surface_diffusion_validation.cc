@@ -21,8 +21,12 @@
 // (run f e-folding times), --coupled 0 (kappa then v_s),
 // --filter-thickness E and --band-width W (lower bounds; the defaults are
 // 6 h and 4 h), --signs 2 (each case with
-// +delta and -delta, rate = their mean); limits --max-rate-error,
-// --max-volume-change, checked on the last run.
+// +delta and -delta, rate = their mean), --coarse-levels k (the mesh
+// outside the band k levels coarser than LEVEL; 3), --velocity-rate 1
+// (print each step's rate; the column velocity_rate_error is the mean
+// over the steps of the rate each step's velocity stands for, before
+// transport); limits --max-rate-error, --max-volume-change, checked on the
+// last run.
 //
 // neck: SCENE has two grains R1, R2 (2D or 3D), or a packing whose
 // overlapping particles are neighbours; it runs STEPS steps (or to its end
@@ -57,6 +61,7 @@
 
 #include <levelsinter/analysis/neck.h>
 #include <levelsinter/level_set/interface_measures.h>
+#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/scene/command_line.h>
 #include <levelsinter/time/simulation.h>
 
@@ -69,6 +74,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <numeric>
 
 using namespace levelsinter;
 
@@ -112,6 +118,22 @@ namespace
     return dim == 2 && !alpha.measure().is_axisymmetric();
   }
 
+  // The weight of mode n at x (relative to the centre) in the amplitude:
+  // cos(n theta) / pi on a planar curve, (2n+1)/(4 pi) P_n / r on a surface
+  // (the 1/r of the solid-angle element's 1/r^2 that N.e_r leaves).
+  template <int dim>
+  double
+  mode_weight(const LevelSetField<dim> &alpha,
+              const Tensor<1, dim>     &x,
+              const unsigned int        mode)
+  {
+    const double r = x.norm();
+    if (planar(alpha))
+      return std::cos(mode * std::atan2(x[1], x[0])) / M_PI;
+    return std::legendre(mode, x[dim - 1] / r) * (2 * mode + 1) /
+           (4 * M_PI * r);
+  }
+
   template <int dim>
   double
   mode_amplitude(const LevelSetField<dim> &alpha,
@@ -123,14 +145,52 @@ namespace
              alpha,
              [&](const Point<dim> &p, const Tensor<1, dim> &normal) {
                const Tensor<1, dim> x = p - centre;
-               const double         r = x.norm();
-               if (planar(alpha))
-                 return std::cos(mode * std::atan2(x[1], x[0])) *
-                        (normal * x) / r / M_PI;
-               else
-                 return std::legendre(mode, x[dim - 1] / r) * (normal * x) /
-                        (r * r) * (2 * mode + 1) / (4 * M_PI);
+               return mode_weight(alpha, x, mode) * (normal * x) / x.norm();
              }) /
+           radius;
+  }
+
+  // The rate of change of mode_amplitude() that the velocity v on the
+  // interface gives: r moves at v.N / (N.e_r), so the amplitude's
+  // integrand N.e_r turns into v.N / r. Divided by the amplitude, minus
+  // this is the rate the step's velocity stands for, before the level set
+  // transports it (--velocity-rate 1).
+  template <int dim>
+  double
+  mode_velocity(const LevelSetField<dim> &alpha,
+                const VelocityField<dim> &velocity,
+                const Point<dim>         &centre,
+                const double              radius,
+                const unsigned int        mode)
+  {
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.surface_flags = update_values | update_JxW_values |
+                               update_quadrature_points |
+                               update_normal_vectors;
+    const FiniteElement<dim>            &fe = velocity.fe();
+    std::vector<types::global_dof_index> indices(fe.dofs_per_cell);
+    double                               result = 0;
+    integrands.on_surface = [&](const auto &cell, const auto &values) {
+      same_cell(cell, velocity.dof_handler())->get_dof_indices(indices);
+      for (const unsigned int q : values.quadrature_point_indices())
+        {
+          // The velocity is Q1^dim, the level set Q1: the level set's
+          // shape values interpolate each component's vertex values.
+          Tensor<1, dim> v;
+          for (unsigned int k = 0; k < fe.dofs_per_cell; ++k)
+            {
+              const auto [component, i] = fe.system_to_component_index(k);
+              v[component] +=
+                values.shape_value(i, q) * velocity.values()[indices[k]];
+            }
+          const Tensor<1, dim> x = values.quadrature_point(q) - centre;
+          result += mode_weight(alpha, x, mode) * (v * values.normal_vector(q)) /
+                    x.norm() * alpha.measure().JxW(values, q);
+        }
+    };
+    interface_measures::integrate_regions(alpha, integrands);
+    return Utilities::MPI::sum(result,
+                               alpha.dof_handler().get_communicator()) /
            radius;
   }
 
@@ -151,6 +211,12 @@ namespace
     // second order and the rate of +delta is off by O(delta) (measured
     // -4 % at delta = 0.05, doc/validation.md); the mean cancels that term.
     const bool both_signs = setting(options, "signs", 1) == 2;
+    // --velocity-rate 1: print each step's rate from the amplitudes and
+    // from the velocity (mode_velocity()).
+    const bool print_series = setting(options, "velocity-rate", 0) != 0;
+    // --coarse-levels k: the mesh away from the band is k levels coarser
+    // than LEVEL (3).
+    const unsigned int coarse_levels = setting(options, "coarse-levels", 3);
 
     const SceneParameters base = read_scene(scene_file, options.overrides);
     // Volume diffusion of an elastic cylinder (plane strain, 2D only):
@@ -186,14 +252,16 @@ namespace
     study::Table table({"mode", "level", "h", "steps", "dt", "max_dofs",
                         "rate", "exact_rate", "rate_error", "volume_change",
                         "mean_iterations", "mean_solve_cpu", "wall_time",
-                        "cpu_time", "max_amplitude_ratio"},
+                        "cpu_time", "max_amplitude_ratio",
+                        "velocity_rate_error"},
                        options.csv);
     for (const unsigned int level : levels)
       for (const unsigned int steps : steps_per_efold)
         {
           const double h = study::cell_size(base, level);
           double rate = 0, volume_change = 0, wall_time = 0, cpu_time = 0,
-                 iterations = 0, solve_cpu = 0, amplitude_ratio = 0;
+                 iterations = 0, solve_cpu = 0, amplitude_ratio = 0,
+                 velocity_rate = 0;
           unsigned int max_dofs = 0;
           for (const double sign : both_signs ? std::vector<double>{1, -1} :
                                                 std::vector<double>{1})
@@ -224,7 +292,9 @@ namespace
                  {"Geometry/Perturbation mode", std::to_string(mode)},
                  {"Mesh refinement/Maximum level", std::to_string(level)},
                  {"Mesh refinement/Minimum level",
-                  std::to_string(level > 3 ? level - 3 : 0)},
+                  std::to_string(level > coarse_levels ?
+                                   level - coarse_levels :
+                                   0)},
                  {"Mesh refinement/Band width",
                   std::to_string(std::max(4 * h, band_width))},
                  {"Level set/Filter thickness",
@@ -236,13 +306,33 @@ namespace
               const auto scene = read_scene(scene_file, overrides);
               Simulation<dim> simulation(scene, MPI_COMM_WORLD, std::cout);
               simulation.initialise();
-              std::vector<double> times, logs;
+              std::vector<double> times, logs, velocity_rates;
+              double              amplitude = 0;
               auto                observe = [&](const double              t,
                                  const LevelSetField<dim> &alpha) {
+                if (!times.empty())
+                  {
+                    // The step's velocity against the amplitude it was
+                    // computed for (the start of the step).
+                    velocity_rates.push_back(
+                      -mode_velocity<dim>(alpha,
+                                          simulation.interface_velocity(),
+                                          centre,
+                                          radius,
+                                          mode) /
+                      amplitude);
+                    if (print_series && study::is_root())
+                      std::cout << "series t " << t << " rate "
+                                << (logs.back() -
+                                    std::log(std::abs(mode_amplitude<dim>(
+                                      alpha, centre, radius, mode)))) /
+                                     (t - times.back())
+                                << " velocity_rate " << velocity_rates.back()
+                                << "\n";
+                  }
+                amplitude = mode_amplitude<dim>(alpha, centre, radius, mode);
                 times.push_back(t);
-                logs.push_back(
-                  std::log(std::abs(
-                    mode_amplitude<dim>(alpha, centre, radius, mode))));
+                logs.push_back(std::log(std::abs(amplitude)));
               };
               observe(0, simulation.level_set());
               const double volume0 =
@@ -275,6 +365,11 @@ namespace
                           << sign * base.geometry.perturbation_amplitude
                           << ": rate " << this_rate << "\n";
               rate += this_rate / n_signs;
+              if (!velocity_rates.empty())
+                velocity_rate += std::accumulate(velocity_rates.begin(),
+                                                 velocity_rates.end(),
+                                                 0.) /
+                                 velocity_rates.size() / n_signs;
               const double change = (volume - volume0) / volume0;
               if (std::abs(change) > std::abs(volume_change))
                 volume_change = change;
@@ -310,7 +405,8 @@ namespace
                      solve_cpu,
                      wall_time,
                      cpu_time,
-                     amplitude_ratio});
+                     amplitude_ratio,
+                     (velocity_rate - exact_rate) / exact_rate});
         }
     // Errors are checked by magnitude: a rate or area error may have
     // either sign.
