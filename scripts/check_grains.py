@@ -34,14 +34,16 @@ if a check fails.
   check_grains.py same RUN_A RUN_B COLUMN RELATIVE_TOLERANCE
       COLUMN of RUN_A/metrics.csv and RUN_B/metrics.csv agree at the rows of
       equal time, relative to the largest |value| of RUN_A.
-  check_grains.py equilibrium RUN RATIO BODY_DIM [--csv OUT.csv]
+  check_grains.py equilibrium RUN RATIO BODY_DIM [--share S] [--csv OUT.csv]
       two equal grains at their end state against the exact equilibrium
       of the same solid volume (doc/numerics.md, "The dihedral angle at the
       triple line"): two truncated discs (BODY_DIM 2) or spheres (3)
       meeting at psi, cos(psi/2) = RATIO / 2; prints the radius (the
       circle fitted to each grain), the grain-boundary radius, the fitted
       circles' centre distance and the dihedral angle, measured and exact;
-      with --csv the table over the run.
+      with --csv the table over the run; --share S: the domain holds the
+      share S of the pair (a quarter box: 0.25), its solid volume is S
+      times the pair's.
   check_grains.py conserved RUN TOLERANCE
       every grain keeps its share of the solid: at every row of
       metrics.csv grain_volume_change_max exceeds |volume_change| (each
@@ -216,12 +218,13 @@ def exact_equilibrium(volume, ratio, body):
     return radius, radius * math.sin(beta), 2 * radius * c, 2 * math.degrees(beta)
 
 
-def equilibrium_table(run, ratio, body):
+def equilibrium_table(run, ratio, body, share=1):
     """Per row of RUN/grain_boundaries.csv with a metrics row: step, time,
-    measured R, a, d, psi and their exact values at the row's volume."""
+    measured R, a, d, psi and their exact values at the row's volume (the
+    domain holding the share `share` of the pair)."""
     metrics = rows(run + "/metrics.csv")
     pairs = rows(run + "/grain_boundaries.csv")
-    volume = {row["step"]: row["solid_volume"] for row in metrics}
+    volume = {row["step"]: row["solid_volume"] / share for row in metrics}
     table = []
     for row in pairs:
         if row["step"] not in volume:
@@ -233,8 +236,8 @@ def equilibrium_table(run, ratio, body):
     return table
 
 
-def equilibrium(run, ratio, body, out):
-    table = equilibrium_table(run, ratio, body)
+def equilibrium(run, ratio, body, out, share=1):
+    table = equilibrium_table(run, ratio, body, share)
     last = table[-1]
     names = ("radius R", "grain-boundary radius a", "centre distance d",
              "dihedral angle psi (degrees)")
@@ -356,8 +359,9 @@ if __name__ == "__main__":
     elif mode == "kinetics":
         kinetics(args[0], float(args[1]), float(args[2]), float(args[3]), args[5])
     elif mode == "equilibrium":
-        equilibrium(args[0], float(args[1]), int(args[2]),
-                    args[4] if len(args) > 4 and args[3] == "--csv" else None)
+        options = dict(zip(args[3::2], args[4::2]))
+        equilibrium(args[0], float(args[1]), int(args[2]), options.get("--csv"),
+                    float(options.get("--share", 1)))
     elif mode == "conserved":
         conserved(args[0], float(args[1]))
     elif mode == "settling":
