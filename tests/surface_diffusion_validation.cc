@@ -310,6 +310,8 @@ namespace
               double              amplitude = 0;
               auto                observe = [&](const double              t,
                                  const LevelSetField<dim> &alpha) {
+                const double now =
+                  mode_amplitude<dim>(alpha, centre, radius, mode);
                 if (!times.empty())
                   {
                     // The step's velocity against the amplitude it was
@@ -323,14 +325,12 @@ namespace
                       amplitude);
                     if (print_series && study::is_root())
                       std::cout << "series t " << t << " rate "
-                                << (logs.back() -
-                                    std::log(std::abs(mode_amplitude<dim>(
-                                      alpha, centre, radius, mode)))) /
+                                << (logs.back() - std::log(std::abs(now))) /
                                      (t - times.back())
                                 << " velocity_rate " << velocity_rates.back()
                                 << "\n";
                   }
-                amplitude = mode_amplitude<dim>(alpha, centre, radius, mode);
+                amplitude = now;
                 times.push_back(t);
                 logs.push_back(std::log(std::abs(amplitude)));
               };
