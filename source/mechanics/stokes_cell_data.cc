@@ -130,15 +130,22 @@ namespace levelsinter
 
     // The phases are constant where alpha < -E (solid) or alpha > 3E
     // (atmosphere beyond its compressible layer, Eq. 102 shifted by 2E); Q1
-    // alpha takes its extremes at the vertices. The nodal H_h of the
-    // balanced force is not bounded this way under hanging nodes, so that
-    // form keeps the 3-point rule.
+    // alpha takes its extremes at the vertices. A void atmosphere takes the
+    // 2-point rule from alpha > E on, where only its compressible layer's
+    // weight varies: a filtered level set saturates at +-2 E_f / pi (sine
+    // filter), inside that layer in the packings (0.036 against 3E = 0.042
+    // in packing_154_coupled_3d.prm), so that otherwise 84-87 % of a
+    // packing mesh's cells took the 3-point rule (doc/performance.md,
+    // "Session 22": 37 % with it, the metrics of the 8-sphere guard within
+    // 5e-4). The nodal H_h of the balanced force is not bounded this way
+    // under hanging nodes, so that form keeps the 3-point rule.
     const auto ls_cell = same_cell(cell, alpha.dof_handler());
     ls_cell->get_dof_values(alpha.alpha(), vertex_alpha);
     const auto [lowest, highest] =
       std::minmax_element(vertex_alpha.begin(), vertex_alpha.end());
-    const bool uniform = inputs.solid_fraction == nullptr &&
-                         (*highest < -E || *lowest > 3 * E);
+    const double atmosphere = inputs.void_atmosphere ? E : 3 * E;
+    const bool   uniform    = inputs.solid_fraction == nullptr &&
+                         (*highest < -E || *lowest > atmosphere);
     FEValues<dim> &values = uniform ? uniform_values : transition_values;
     FEValues<dim> &level_set_values =
       uniform ? uniform_level_set_values : transition_level_set_values;

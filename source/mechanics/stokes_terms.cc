@@ -54,6 +54,7 @@ namespace levelsinter
     inputs.interface_half_width_cells = settings.interface_half_width_cells;
     inputs.band_level                 = settings.band_level;
     inputs.stabilisation_constant     = settings.stabilisation_constant;
+    inputs.void_atmosphere            = settings.void_atmosphere;
     inputs.free_faces                 = !faces.empty();
     inputs.symmetry_boundaries        = settings.symmetry_boundaries;
   }

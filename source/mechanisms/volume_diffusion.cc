@@ -93,6 +93,9 @@ namespace levelsinter
     // The paper's Eq. 108 on {alpha_h = 0}: the Laplace jump stays in the
     // cut cells, clear of the nodes where xi reads grad p.
     settings.form = TwoPhaseStokes<dim>::SurfaceTensionForm::sharp;
+    // The atmosphere here only lets the solid's surface move: no stress of
+    // its own is read.
+    settings.void_atmosphere = true;
   }
 
   template <int dim>

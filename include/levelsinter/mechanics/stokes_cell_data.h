@@ -79,6 +79,8 @@ namespace levelsinter
       double       interface_half_width_cells = 1.5;
       unsigned int band_level                 = 0;
       double       stabilisation_constant     = 1; // c_tau of Eq. 99
+      // TwoPhaseStokes::Settings::void_atmosphere.
+      bool void_atmosphere = false;
       // Gather the free box faces (those off the symmetry planes).
       bool                            free_faces = false;
       std::vector<types::boundary_id> symmetry_boundaries;

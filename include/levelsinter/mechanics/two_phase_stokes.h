@@ -102,6 +102,14 @@ namespace levelsinter
       unsigned int                    max_iterations = 500;
       /** Smoothed (or plain) aggregation in the velocity AMG. */
       bool                            smoothed_aggregation = true;
+      /**
+       * The atmosphere is a void that only takes up volume (volume
+       * diffusion's elastic problem): where alpha > E its viscosity is
+       * constant and only the compressible layer's weight varies, which
+       * the cell integrates with the 2-point rule as the uniform phases
+       * (StokesCellData::reinit()).
+       */
+      bool                            void_atmosphere = false;
 
       /** The settings a scene's `Viscous flow` entries give, with the
        * symmetry planes of its domain and the interface band at
