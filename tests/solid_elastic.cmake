@@ -89,3 +89,39 @@ bad_input_test(solid_space_viscous_flow "Viscous flow/Pressure space"
 # the level set after the restart.
 restart_test(solid_restart_two_grains_vd_np1_np1 ${VD_GRAINS} 1 1
   5e-6 "${RESTART_VD_IGNORED}" ${RESTART_VD_ARGS} ${SOLID_SPACE})
+
+# Studies behind doc/validation.md, "The solid-only elastic problem"
+# (validation-long): the elastic inclusion of
+# study_sharp_elastic_inclusion_{continuous,extended}_2d in the solid space;
+# the two grains of study_sharp_vd_neck_l*_lambda6_2d (lambda = 6 cells,
+# nodal gradient) at R/h = 12.8 and 25.6; and at R/h = 25.6 xi from the
+# recovered gradient at lambda = 3, in the solid and the extended spaces.
+add_test(NAME study_sharp_elastic_inclusion_solid_2d COMMAND ${INCLUSION}
+  ${INCLUSION_SCENES}/elastic_inclusion_2d.prm 4,5,6,7 --min-level 3
+  --steps 2 ${SOLID_SPACE} --csv sharp_elastic_inclusion_solid_2d.csv)
+set_tests_properties(study_sharp_elastic_inclusion_solid_2d PROPERTIES
+  RESOURCE_LOCK elastic_inclusion_output)
+set(SOLID_STUDIES study_sharp_elastic_inclusion_solid_2d)
+foreach(level_e_band "4;0.24;0.236" "5;0.12;0.118")
+  list(GET level_e_band 0 level)
+  list(GET level_e_band 1 filter)
+  list(GET level_e_band 2 band)
+  add_test(NAME study_solid_vd_neck_l${level}_lambda6_2d COMMAND ${SD_VALIDATE}
+    neck ${VD_GRAINS} 2000 --sample-interval 1 ${SOLID_SPACE}
+    --set "Mesh refinement/Maximum level=${level}"
+    --set "Level set/Filter thickness=${filter}"
+    --set "Mesh refinement/Band width=${band}" --set "Time/End time=0.02"
+    --csv solid_vd_neck_l${level}_lambda6_2d.csv)
+  list(APPEND SOLID_STUDIES study_solid_vd_neck_l${level}_lambda6_2d)
+endforeach()
+foreach(space solid extended)
+  add_test(NAME study_${space}_vd_neck_l5_lambda3_recovered_2d
+    COMMAND ${SD_VALIDATE} neck ${VD_GRAINS} 2000 --sample-interval 1
+    --set "Viscous flow/Pressure space=${space}"
+    --set "Volume diffusion/Interior offset=3"
+    --set "Volume diffusion/Pressure gradient=recovered"
+    --set "Time/End time=0.02"
+    --csv ${space}_vd_neck_l5_lambda3_recovered_2d.csv)
+  list(APPEND SOLID_STUDIES study_${space}_vd_neck_l5_lambda3_recovered_2d)
+endforeach()
+set_tests_properties(${SOLID_STUDIES} PROPERTIES LABELS validation-long)
