@@ -11,8 +11,8 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/mechanics/cut_assembly.h>
 #include <levelsinter/mechanics/extended_pressure_stokes.h>
-#include <levelsinter/mechanics/penalty_faces.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
 #include <levelsinter/mechanics/solid_elastic_stokes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
@@ -240,14 +240,8 @@ namespace levelsinter
           terms.assemble_surface(data, contribution);
           symmetrise(data, contribution);
           cell->get_dof_indices(contribution.dof_indices);
-          constraints.distribute_local_to_global(contribution.matrix,
-                                                 contribution.rhs,
-                                                 contribution.dof_indices,
-                                                 system_matrix,
-                                                 system_rhs);
-          constraints.distribute_local_to_global(contribution.schur,
-                                                 contribution.dof_indices,
-                                                 schur_matrix);
+          add_cell_contribution(
+            constraints, contribution, system_matrix, system_rhs, schur_matrix);
         }
     if (ghost_penalty > 0)
       assemble_ghost_penalty(alpha, classifier);
@@ -263,11 +257,7 @@ namespace levelsinter
     const NonMatching::MeshClassifier<dim> &classifier)
   {
     const GhostPenaltyAssembler<dim> penalty(ghost_penalty);
-    FEInterfaceValues<dim>           values(finite_element,
-                                  QGauss<dim - 1>(2),
-                                  update_gradients | update_JxW_values |
-                                    update_normal_vectors |
-                                    update_quadrature_points);
+    FEInterfaceValues<dim> values = penalty_face_values(finite_element);
     const std::array<PhaseCoefficients, 2> laws = {
       {phase_law.coefficients({1, 0}), phase_law.coefficients({0, 1})}};
     FullMatrix<double> matrix, schur, matrix_p, schur_p;

@@ -5,13 +5,55 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/base/quadrature_lib.h>
+
 #include <deal.II/fe/fe_interface_values.h>
+
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/trilinos_block_sparse_matrix.h>
+#include <deal.II/lac/trilinos_parallel_block_vector.h>
+
+#include <levelsinter/mechanics/stokes_cell_data.h>
 
 #include <vector>
 
+// What the cut discretisations of the velocity-pressure problem
+// (ExtendedPressureStokes, SolidElasticStokes) share in their assembly.
 namespace levelsinter
 {
   using namespace dealii;
+
+  /** Add a cut cell's @p contribution (matrix and right-hand side, and
+   * the Schur approximation's block) through @p constraints. */
+  inline void
+  add_cell_contribution(const AffineConstraints<double>          &constraints,
+                        const CellContribution                   &contribution,
+                        TrilinosWrappers::BlockSparseMatrix      &matrix,
+                        TrilinosWrappers::MPI::BlockVector       &rhs,
+                        TrilinosWrappers::BlockSparseMatrix      &schur)
+  {
+    constraints.distribute_local_to_global(contribution.matrix,
+                                           contribution.rhs,
+                                           contribution.dof_indices,
+                                           matrix,
+                                           rhs);
+    constraints.distribute_local_to_global(contribution.schur,
+                                           contribution.dof_indices,
+                                           schur);
+  }
+
+  /** The face values of the ghost penalties on @p fe: normal gradients
+   * at 2 Gauss points per direction (exact for the Q1 products). */
+  template <int dim>
+  FEInterfaceValues<dim>
+  penalty_face_values(const FiniteElement<dim> &fe)
+  {
+    return FEInterfaceValues<dim>(fe,
+                                  QGauss<dim - 1>(2),
+                                  update_gradients | update_JxW_values |
+                                    update_normal_vectors |
+                                    update_quadrature_points);
+  }
 
   /**
    * @p callback(cell, face, neighbor, neighbor_is_coarser) on each interior
