@@ -302,16 +302,17 @@ namespace levelsinter
               drag.assemble(data, contribution);
             }
           terms.assemble_surface(data, contribution);
-          symmetrise(data, contribution);
-          cell->get_dof_indices(contribution.dof_indices);
-          add_cell_contribution(
-            constraints, contribution, system_matrix, system_rhs, schur_matrix);
+          add_cell_contribution(data,
+                                cell,
+                                constraints,
+                                contribution,
+                                system_matrix,
+                                system_rhs,
+                                schur_matrix);
         }
     if (ghost_penalty > 0)
       assemble_ghost_penalty(alpha, classifier);
-    system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-    schur_matrix.compress(VectorOperation::add);
+    compress_system(system_matrix, system_rhs, schur_matrix);
   }
 
   template <int dim>

@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/stokes_cell_data.h>
 
 #include <vector>
@@ -23,15 +24,21 @@ namespace levelsinter
 {
   using namespace dealii;
 
-  /** Add a cut cell's @p contribution (matrix and right-hand side, and
-   * the Schur approximation's block) through @p constraints. */
-  inline void
-  add_cell_contribution(const AffineConstraints<double>          &constraints,
-                        const CellContribution                   &contribution,
-                        TrilinosWrappers::BlockSparseMatrix      &matrix,
-                        TrilinosWrappers::MPI::BlockVector       &rhs,
-                        TrilinosWrappers::BlockSparseMatrix      &schur)
+  /** Complete the @p contribution of @p cell gathered in @p data
+   * (symmetrise()) and add it (matrix and right-hand side, and the Schur
+   * approximation's block) through @p constraints. */
+  template <int dim, typename CellIterator>
+  void
+  add_cell_contribution(const StokesCellData<dim>           &data,
+                        const CellIterator                  &cell,
+                        const AffineConstraints<double>     &constraints,
+                        CellContribution                    &contribution,
+                        TrilinosWrappers::BlockSparseMatrix &matrix,
+                        TrilinosWrappers::MPI::BlockVector  &rhs,
+                        TrilinosWrappers::BlockSparseMatrix &schur)
   {
+    symmetrise(data, contribution);
+    cell->get_dof_indices(contribution.dof_indices);
     constraints.distribute_local_to_global(contribution.matrix,
                                            contribution.rhs,
                                            contribution.dof_indices,
@@ -40,6 +47,17 @@ namespace levelsinter
     constraints.distribute_local_to_global(contribution.schur,
                                            contribution.dof_indices,
                                            schur);
+  }
+
+  /** Exchange the entries added on other ranks' rows. */
+  inline void
+  compress_system(TrilinosWrappers::BlockSparseMatrix &matrix,
+                  TrilinosWrappers::MPI::BlockVector  &rhs,
+                  TrilinosWrappers::BlockSparseMatrix &schur)
+  {
+    matrix.compress(VectorOperation::add);
+    rhs.compress(VectorOperation::add);
+    schur.compress(VectorOperation::add);
   }
 
   /** The face values of the ghost penalties on @p fe: normal gradients
