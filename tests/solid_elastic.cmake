@@ -125,3 +125,5 @@ foreach(space solid extended)
   list(APPEND SOLID_STUDIES study_${space}_vd_neck_l5_lambda3_recovered_2d)
 endforeach()
 set_tests_properties(${SOLID_STUDIES} PROPERTIES LABELS validation-long)
+restart_test(solid_restart_two_grains_vd_np1_np2 ${VD_GRAINS} 1 2
+  5e-6 "${RESTART_VD_IGNORED};cells;dofs" ${RESTART_VD_ARGS} ${SOLID_SPACE})
