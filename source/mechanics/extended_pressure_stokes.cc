@@ -11,8 +11,10 @@
 #include <deal.II/lac/sparsity_tools.h>
 
 #include <levelsinter/level_set/cell_size.h>
+#include <levelsinter/mechanics/cut_assembly.h>
 #include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/solid_elastic_stokes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/stokes_terms.h>
 
@@ -109,7 +111,9 @@ namespace levelsinter
                                       constraints,
                                       false,
                                       Utilities::MPI::this_mpi_process(comm));
-      for_each_penalty_face([&](const auto &cell,
+      for_each_penalty_face(dofs,
+                            settings.band_level,
+                            [&](const auto &cell,
                                 const unsigned int,
                                 const auto &neighbor,
                                 const bool) {
@@ -234,22 +238,17 @@ namespace levelsinter
             if (data.select_phase(phase))
               terms.assemble_bulk(data, contribution);
           terms.assemble_surface(data, contribution);
-          symmetrise(data, contribution);
-          cell->get_dof_indices(contribution.dof_indices);
-          constraints.distribute_local_to_global(contribution.matrix,
-                                                 contribution.rhs,
-                                                 contribution.dof_indices,
-                                                 system_matrix,
-                                                 system_rhs);
-          constraints.distribute_local_to_global(contribution.schur,
-                                                 contribution.dof_indices,
-                                                 schur_matrix);
+          add_cell_contribution(data,
+                                cell,
+                                constraints,
+                                contribution,
+                                system_matrix,
+                                system_rhs,
+                                schur_matrix);
         }
     if (ghost_penalty > 0)
       assemble_ghost_penalty(alpha, classifier);
-    system_matrix.compress(VectorOperation::add);
-    system_rhs.compress(VectorOperation::add);
-    schur_matrix.compress(VectorOperation::add);
+    compress_system(system_matrix, system_rhs, schur_matrix);
   }
 
   template <int dim>
@@ -259,17 +258,15 @@ namespace levelsinter
     const NonMatching::MeshClassifier<dim> &classifier)
   {
     const GhostPenaltyAssembler<dim> penalty(ghost_penalty);
-    FEInterfaceValues<dim>           values(finite_element,
-                                  QGauss<dim - 1>(2),
-                                  update_gradients | update_JxW_values |
-                                    update_normal_vectors |
-                                    update_quadrature_points);
+    FEInterfaceValues<dim> values = penalty_face_values(finite_element);
     const std::array<PhaseCoefficients, 2> laws = {
       {phase_law.coefficients({1, 0}), phase_law.coefficients({0, 1})}};
     FullMatrix<double> matrix, schur, matrix_p, schur_p;
     std::vector<unsigned int>            pressure_dofs;
     std::vector<types::global_dof_index> indices;
-    for_each_penalty_face([&](const auto        &cell,
+    for_each_penalty_face(dofs,
+                          settings.band_level,
+                          [&](const auto        &cell,
                               const unsigned int f,
                               const auto        &neighbor,
                               const bool         coarser) {
@@ -277,19 +274,7 @@ namespace levelsinter
       const Location there = classifier.location_to_level_set(neighbor);
       if (here != Location::intersected && there != Location::intersected)
         return;
-      if (coarser)
-        {
-          const auto [nf, nsf] = cell->neighbor_of_coarser_neighbor(f);
-          values.reinit(
-            cell, f, numbers::invalid_unsigned_int, neighbor, nf, nsf);
-        }
-      else
-        values.reinit(cell,
-                      f,
-                      numbers::invalid_unsigned_int,
-                      neighbor,
-                      cell->neighbor_of_neighbor(f),
-                      numbers::invalid_unsigned_int);
+      reinit_penalty_face(values, cell, f, neighbor, coarser);
       const unsigned int n = values.n_current_interface_dofs();
       const double       h = cell_size(cell);
       for (const Phase phase : phases)
@@ -308,22 +293,11 @@ namespace levelsinter
             // pattern holds: the face's other DoFs include the neighbour's
             // constrained velocities, whose diagonal the constraints would
             // add to a row another rank owns and this one has no entry in.
-            pressure_dofs.clear();
-            indices.clear();
-            const auto all = values.get_interface_dof_indices();
-            for (unsigned int i = 0; i < n; ++i)
-              {
-                const auto local = values.interface_dof_to_dof_indices(i);
-                const unsigned int k =
-                  local[0] != numbers::invalid_unsigned_int ? local[0] :
-                                                              local[1];
-                if (finite_element.system_to_component_index(k).first ==
-                    pressure_component(phase))
-                  {
-                    pressure_dofs.push_back(i);
-                    indices.push_back(all[i]);
-                  }
-              }
+            component_interface_dofs(values,
+                                     finite_element,
+                                     pressure_component(phase),
+                                     pressure_dofs,
+                                     indices);
             matrix_p.reinit(indices.size(), indices.size());
             schur_p.reinit(indices.size(), indices.size());
             matrix_p.extract_submatrix_from(matrix,
@@ -340,37 +314,6 @@ namespace levelsinter
                                                    schur_matrix);
           }
     });
-  }
-
-  template <int dim>
-  template <typename Callback>
-  void
-  ExtendedPressureStokes<dim>::for_each_penalty_face(
-    const Callback &callback) const
-  {
-    // Each face once: from the finer side, or at one level from the lower
-    // cell id (the lower rank across a partition boundary). Only in the
-    // interface band (its level or finer), which holds the interface
-    // between two mesh changes.
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned() &&
-          cell->level() >= int(settings.band_level))
-        for (const unsigned int f : cell->face_indices())
-          {
-            if (cell->at_boundary(f))
-              continue;
-            const auto neighbor = cell->neighbor(f);
-            if (neighbor->has_children() ||
-                neighbor->level() < int(settings.band_level))
-              continue;
-            const bool coarser = cell->neighbor_is_coarser(f);
-            if (!coarser &&
-                (neighbor->is_locally_owned() ?
-                   neighbor->id() < cell->id() :
-                   neighbor->subdomain_id() < cell->subdomain_id()))
-              continue;
-            callback(cell, f, neighbor, coarser);
-          }
   }
 
   template <int dim>
@@ -412,6 +355,9 @@ namespace levelsinter
     if (parameters.pressure_space ==
         ViscousFlowParameters::PressureSpace::extended)
       return std::make_unique<ExtendedPressureStokes<dim>>(
+        tria, settings, law, parameters.ghost_penalty);
+    if (parameters.pressure_space == ViscousFlowParameters::PressureSpace::solid)
+      return std::make_unique<SolidElasticStokes<dim>>(
         tria, settings, law, parameters.ghost_penalty);
     return std::make_unique<TwoPhaseStokes<dim>>(tria, settings, law);
   }

@@ -16,7 +16,8 @@ namespace levelsinter
     const auto box    = GridTools::compute_bounding_box(dofs.get_triangulation());
     const auto centre = box.center();
     for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
+      // Cells without DoFs (FE_Nothing of the solid-only problem) skipped.
+      if (cell->is_locally_owned() && cell->get_fe().n_dofs_per_cell() > 0)
         for (const unsigned int v : cell->vertex_indices())
           {
             const Tensor<1, dim> x = cell->vertex(v) - centre;

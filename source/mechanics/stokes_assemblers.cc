@@ -179,6 +179,27 @@ namespace levelsinter
 
   template <int dim>
   void
+  DragAssembler<dim>::assemble(const StokesCellData<dim> &data,
+                               CellContribution          &cell) const
+  {
+    // w_i . w_j = delta_{c_i c_j} phi_i phi_j; the upper triangle suffices.
+    const auto &velocity_dofs = data.velocity_dofs;
+    for (unsigned int k = 0; k < data.n_q; ++k)
+      {
+        const double c_d = relative * data.law[k].a1 * data.JxW[k];
+        const auto  &phi = data.value[k];
+        for (unsigned int a = 0; a < velocity_dofs.size(); ++a)
+          for (unsigned int b = a; b < velocity_dofs.size(); ++b)
+            {
+              const unsigned int i = velocity_dofs[a], j = velocity_dofs[b];
+              if (data.component[i] == data.component[j])
+                cell.matrix(i, j) += c_d * phi[i] * phi[j];
+            }
+      }
+  }
+
+  template <int dim>
+  void
   TractionAssembler<dim>::assemble(
     const StokesCellData<dim>                  &data,
     const typename StokesCellData<dim>::Face &face,
@@ -239,6 +260,7 @@ namespace levelsinter
   template class CurvatureSurfaceTensionAssembler<dim>;             \
   template class BalancedForceAssembler<dim>;                       \
   template class LaplaceBeltramiAssembler<dim>;                     \
+  template class DragAssembler<dim>;                                \
   template class TractionAssembler<dim>;                            \
   template class GhostPenaltyAssembler<dim>;                        \
   template void symmetrise(const StokesCellData<dim> &, CellContribution &);

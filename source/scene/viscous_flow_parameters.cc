@@ -101,7 +101,7 @@ namespace levelsinter
                         "semi-implicit surface tension.");
       prm.declare_entry("Pressure space",
                         "continuous",
-                        Patterns::Selection("continuous|extended"),
+                        Patterns::Selection("continuous|extended|solid"),
                         "continuous: one Q1 pressure over the box, the phases "
                         "smeared over the interface half width; extended: one "
                         "Q1 pressure per phase, both present on the cells the "
@@ -112,13 +112,22 @@ namespace levelsinter
                         "extended needs 'Surface tension form = sharp' (or "
                         "sharp-curvature) and "
                         "the iterative linear solver, and refuses "
-                        "viscoelastic melts.");
+                        "viscoelastic melts. solid: the elastic problem of "
+                        "volume diffusion on the cells with solid only, the "
+                        "atmosphere a void (its viscosity left out), the "
+                        "solid's part of each cut cell by cut-cell "
+                        "quadrature, the surface tension on alpha_h = 0 and "
+                        "a ghost penalty on the faces of cut cells "
+                        "(doc/mechanics_operator.md); volume diffusion only, "
+                        "with the iterative linear solver.");
       prm.declare_entry("Ghost penalty",
                         "0.1",
                         Patterns::Double(0),
                         "g of the pressure ghost penalty of the extended "
                         "pressure space, g (a2/a1) h^3 [d_n p][d_n q] on the "
-                        "faces of cut cells (no unit; doc/numerics.md).");
+                        "faces of cut cells (no unit; doc/numerics.md); the "
+                        "solid space adds g a1 h [d_n v][d_n w] for the "
+                        "velocity.");
       prm.declare_entry("Pore closure radius",
                         "0",
                         Patterns::Double(0),
@@ -175,17 +184,25 @@ namespace levelsinter
       "Viscous flow",
       "Pressure space",
       {{"continuous", PressureSpace::continuous},
-       {"extended", PressureSpace::extended}});
+       {"extended", PressureSpace::extended},
+       {"solid", PressureSpace::solid}});
     ghost_penalty = prm.get_double("Ghost penalty");
     pore_closure_radius = prm.get_double("Pore closure radius");
     prm.leave_subsection();
 
     // The volume-diffusion mechanics reads this section too, enabled or
     // not: its checks come first.
-    if (pressure_space == PressureSpace::extended &&
+    if (pressure_space != PressureSpace::continuous &&
         linear_solver == LinearSolver::direct)
       fail_entry("Viscous flow/Linear solver",
-                 "must be 'iterative' with 'Pressure space = extended'");
+                 "must be 'iterative' with 'Pressure space = extended' or "
+                 "'solid'");
+    // The flow of the solid moves the interface, and the level set's nodes
+    // in the atmosphere would have no velocity to move with.
+    if (enabled && pressure_space == PressureSpace::solid)
+      fail_entry("Viscous flow/Pressure space",
+                 "'solid' is the elastic problem of volume diffusion; "
+                 "viscous flow needs 'continuous' or 'extended'");
     if (enabled && pressure_space == PressureSpace::extended &&
         surface_tension_form != SurfaceTensionForm::sharp &&
         surface_tension_form != SurfaceTensionForm::sharp_curvature)

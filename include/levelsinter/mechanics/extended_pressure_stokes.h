@@ -125,13 +125,6 @@ namespace levelsinter
     assemble_ghost_penalty(const LevelSetField<dim>               &alpha,
                            const NonMatching::MeshClassifier<dim> &classifier);
 
-    /** @p callback(cell, face, neighbor, neighbor_is_coarser) on each
-     * interior face that can carry the ghost penalty, once over all
-     * ranks: the sparsity pattern and the assembly visit the same faces. */
-    template <typename Callback>
-    void
-    for_each_penalty_face(const Callback &callback) const;
-
     const Settings            settings;
     const FreeRigidMotions    free_motions;
     const PhaseLaw<dim>      &phase_law;
@@ -153,8 +146,9 @@ namespace levelsinter
 
   /**
    * The discretisation a scene's `Viscous flow/Pressure space` chooses:
-   * TwoPhaseStokes (continuous) or ExtendedPressureStokes (extended), for
-   * @p settings (TwoPhaseStokes::Settings::from()) and @p law.
+   * TwoPhaseStokes (continuous), ExtendedPressureStokes (extended) or
+   * SolidElasticStokes (solid), for @p settings
+   * (TwoPhaseStokes::Settings::from()) and @p law.
    */
   template <int dim>
   std::unique_ptr<VelocityPressureOperator<dim>>

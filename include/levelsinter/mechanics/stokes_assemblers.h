@@ -151,6 +151,29 @@ namespace levelsinter
     const double weight;
   };
 
+  /**
+   * A drag c_d (v, w) with c_d = @p relative a1 at each point, for the
+   * solid-only problem (SolidElasticStokes): without an atmosphere each
+   * connected body is free to move rigidly, and the drag makes the system
+   * regular, as the atmosphere's viscosity did (its stress on a body is
+   * c_d L^2 / a1 = @p relative L^2 of the solid's; doc/mechanics_operator.md).
+   */
+  template <int dim>
+  class DragAssembler : public StokesAssembler<dim>
+  {
+  public:
+    explicit DragAssembler(const double relative)
+      : relative(relative)
+    {}
+
+    void
+    assemble(const StokesCellData<dim> &data,
+             CellContribution          &cell) const override;
+
+  private:
+    const double relative;
+  };
+
   /** External pressure on the free box faces: traction -p_ext n. */
   template <int dim>
   class TractionAssembler : public StokesFaceAssembler<dim>

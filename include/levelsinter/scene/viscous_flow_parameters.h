@@ -30,7 +30,9 @@ namespace levelsinter
     enum class PressureSpace
     {
       continuous, // one Q1 pressure across the smeared interface
-      extended    // one Q1 pressure per phase, cut at {alpha_h = 0}
+      extended,   // one Q1 pressure per phase, cut at {alpha_h = 0}
+      solid       // (v, p) on the cells with solid only, the atmosphere a
+                  // void (the elastic problem of volume diffusion)
     };
 
     static void
