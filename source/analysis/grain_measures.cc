@@ -164,6 +164,7 @@ namespace levelsinter
     // circle meets the plane) and on the whole grain (radius and centre).
     const auto boundaries = grain_geometry::find_grain_boundaries(alpha, cells);
     const unsigned int  nb = boundaries.size();
+    const bool revolution = alpha.measure().template body_dimension<dim>() == 3;
     std::vector<double> moments(nb * 8 * n_moments, 0.);
     const double        inner = 1.5 * grains.kernel_width();
     const auto          fit    = [&](const unsigned int b,
@@ -274,22 +275,26 @@ namespace levelsinter
               rate_sum += rate;
               ++n_rates;
             }
-        // The near circle has its centre on the line of centres (a body
-        // of revolution about it, a pair of discs symmetric about it): the
+        // On a body of revolution (3D, axisymmetric) the near circle has
+        // its centre on the line of centres, the axis of the pair: the
         // free circle's centre is fitted from a short arc next to the
         // grain's widest section, where rho hardly changes, and scattered
-        // from 0 to 111 degrees in 3D (doc/validation.md). Where it meets
-        // the plane zeta = 0 its outward normal has the component -zeta_c
-        // / R along +zeta, -cos(psi/2) on j's side (centre at zeta_c > 0
-        // for psi < 180 degrees), +cos(psi/2) on i's. The means over the
-        // sides and ends with a fit.
+        // from 0 to 111 degrees between rows in 3D (doc/validation.md). In
+        // 2D each end is a free circle (the centred one reads a neck that
+        // is still opening 5-15 degrees lower). Where it meets the plane
+        // zeta = 0 its outward normal has the component -zeta_c / R along
+        // +zeta, -cos(psi/2) on j's side (centre at zeta_c > 0 for psi <
+        // 180 degrees), +cos(psi/2) on i's. The means over the sides and
+        // ends with a fit.
         const unsigned int k = &b - boundaries.data();
         double cos_half = 0, fit_radius = 0, centre[2] = {0, 0};
         unsigned int n_near = 0, n_whole = 0, n_centre[2] = {0, 0};
         for (unsigned int side = 0; side < 2; ++side)
           for (unsigned int end = 0; end < 2; ++end)
             {
-              const auto near = fitted_axial_circle(fit(k, 0, side, end));
+              const auto near = revolution ?
+                                  fitted_axial_circle(fit(k, 0, side, end)) :
+                                  fitted_circle(fit(k, 0, side, end));
               if (std::isfinite(near[2]))
                 {
                   cos_half += (side == 1 ? near[0] : -near[0]) / near[2];
