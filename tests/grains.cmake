@@ -404,3 +404,22 @@ restart_test(restart_grains_unequal_2d_np1_np2
 grains_run(grains_equilibrium_3d grains_equilibrium_3d.prm 1)
 grains_check(grains_equilibrium_3d_initial grains_equilibrium_3d initial
   grains_equilibrium_3d 0.25 1 1e-3)
+# The 3D pair relaxing (the law kept), 100 steps to t = 0.0024 (6 min of
+# wall at load 3-7): at the rows with t >= 0.0018 (steps 75-100) measured
+# R, a, d within 1.9, 2.7, 2.5 % and psi 118.3-119.4 degrees (mean 118.8)
+# with the centred near circle (the free circle read 53-95 on these
+# steps). The trajectory changes with the step times (the end time alone
+# moves it by a few per cent: End time 1 is the measured run's), so the
+# limits are 5 % and 3 degrees on the mean. Not in CI: the pair needs
+# about 100 steps to relax.
+set(name study_grains_equilibrium_3d_relaxing)
+add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+  --set "Output/Field formats=none" --set "Output/Progress interval=0"
+  --set "Time/Maximum steps=100" --set "Time/End time=1"
+  --set "Output/Directory=${name}" ${GRAIN_SCENES}/grains_equilibrium_3d.prm)
+add_test(NAME ${name} COMMAND ${CHECK_GRAINS} settled ${name} 1 3 0.0018 0.05 3
+  0.25)
+set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
+  LABELS validation-long)
+set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
+  LABELS validation-long)
