@@ -48,11 +48,12 @@ if a check fails.
       every grain keeps its share of the solid: at every row of
       metrics.csv grain_volume_change_max exceeds |volume_change| (each
       grain's volume may follow the solid's) by at most TOLERANCE.
-  check_grains.py settled RUN RATIO BODY_DIM T_FROM TOLERANCE TOLERANCE_DEGREES
+  check_grains.py settled RUN RATIO BODY_DIM T_FROM TOLERANCE TOLERANCE_DEGREES [SHARE]
       the pair of `equilibrium` at every row with time >= T_FROM: R, a
       and d within the relative TOLERANCE of the exact end state, psi's
       mean over those rows within TOLERANCE_DEGREES; prints the largest
-      errors, psi's range and the rigid grains' drift.
+      errors, psi's range and the rigid grains' drift. SHARE: as
+      `equilibrium`'s --share.
   check_grains.py settling OUT.csv T_FROM LABEL RUN RATIO BODY_DIM EVERY ...
       per run (every EVERY-th row at time >= T_FROM): the largest errors
       of `settled`, psi's range and mean, the rigid grains' mean approach
@@ -256,12 +257,14 @@ def equilibrium(run, ratio, body, out, share=1):
                 f.write(",".join("%.8g" % v for v in r) + "\n")
 
 
-def settling(run, ratio, body, t_from, every=1):
+def settling(run, ratio, body, t_from, every=1, share=1):
     """Over the rows with time >= t_from (every `every`-th row): their
     number, the largest relative errors of R, a, d, psi's least, largest
     and mean, its exact value, the rigid grains' approach rate (mean) and
-    their centre distance's relative change over those rows."""
-    table = [r for r in equilibrium_table(run, ratio, body) if r[1] >= t_from]
+    their centre distance's relative change over those rows (the domain
+    holding the share `share` of the pair)."""
+    table = [r for r in equilibrium_table(run, ratio, body, share)
+             if r[1] >= t_from]
     if not table:
         fail("no row at t >= %g" % t_from)
     table = table[::every]
@@ -293,9 +296,9 @@ def settling_table(out, t_from, cases):
             print(label, " ".join("%.4g" % v for v in values))
 
 
-def settled(run, ratio, body, t_from, tolerance, tolerance_degrees):
+def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1):
     n, *largest, low, high, mean, exact, rate, drift, _ = settling(
-        run, ratio, body, t_from)
+        run, ratio, body, t_from, share=share)
     # psi's mean: a single row's reading (circles fitted near the line)
     # scatters by 10-40 degrees on these meshes (doc/validation.md).
     off = abs(mean - exact)
@@ -367,7 +370,7 @@ if __name__ == "__main__":
     elif mode == "settling":
         settling_table(args[0], float(args[1]), args[2:])
     elif mode == "settled":
-        settled(args[0], float(args[1]), int(args[2]), *map(float, args[3:6]))
+        settled(args[0], float(args[1]), int(args[2]), *map(float, args[3:7]))
     elif mode == "angle":
         angle(args[0], *map(float, args[1:4]))
     elif mode == "initial":

@@ -322,8 +322,9 @@ grains_check(grains_equilibrium_axisymmetric_law
 # The relaxing pair against the exact truncated spheres (the run's solid
 # volume), R/h = 16 to t = 0.005 (215 steps, 10 s CPU in the timed
 # sections): at the 29 rows with t >= 0.003 measured R, a, d within 2.7,
-# 1.5, 5.7 % and psi 72.6 to 139.0 degrees, mean 118.8 (120: a single
-# row's fit scatters); limits 8 % and 5 degrees on the mean. It fails
+# 1.5, 5.7 % and psi 113.8 to 120.1 degrees, mean 117.4 (the near circle
+# centred on the axis since the seventh increment; the free circle read
+# 72.6 to 139.0, mean 118.8); limits 8 % and 5 degrees on the mean. It fails
 # when the pair merges or loses its grain boundary: the rigid centres
 # drift apart (+24 % over these rows) and the pair is dropped once they
 # are 10 % beyond touching, at t = 0.0072 (doc/validation.md).
@@ -390,3 +391,35 @@ set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
 restart_test(restart_grains_unequal_2d_np1_np2
   ${GRAIN_SCENES}/grains_unequal_2d.prm 1 2 1e-6
   "${RESTART_GRAINS_IGNORED};cells;dofs" ${RESTART_GRAINS_ARGS})
+
+# --- The root curvature and the 3D pair (issue 28, seventh increment;
+# doc/validation.md, "Settling the pair: the root curvature's bias") -------
+# The dihedral angle's fit in 3D: step 0 of grains_equilibrium_3d.prm (the
+# pair in a quarter box, R/h = 16), two overlapping spheres of R = 0.25
+# meeting at psi = 25.42 degrees: measured 25.07 degrees with the near
+# circle centred on the line of centres (the free circle read 23.24 and,
+# later in the run, 0-111 degrees), the fitted radius 6.4e-4 and the
+# centre distance 1e-6 off. Limits 1 degree, 1e-3 (as the 2D check).
+# One step, 15 s on the shared machine.
+grains_run(grains_equilibrium_3d grains_equilibrium_3d.prm 1)
+grains_check(grains_equilibrium_3d_initial grains_equilibrium_3d initial
+  grains_equilibrium_3d 0.25 1 1e-3)
+# The 3D pair relaxing (the law kept), 100 steps to t = 0.0024 (6 min of
+# wall at load 3-7): at the rows with t >= 0.0018 (steps 75-100) measured
+# R, a, d within 1.9, 2.7, 2.5 % and psi 118.3-119.4 degrees (mean 118.8)
+# with the centred near circle (the free circle read 53-95 on these
+# steps). The trajectory changes with the step times (the end time alone
+# moves it by a few per cent: End time 1 is the measured run's), so the
+# limits are 5 % and 3 degrees on the mean. Not in CI: the pair needs
+# about 100 steps to relax.
+set(name study_grains_equilibrium_3d_relaxing)
+add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+  --set "Output/Field formats=none" --set "Output/Progress interval=0"
+  --set "Time/Maximum steps=100" --set "Time/End time=1"
+  --set "Output/Directory=${name}" ${GRAIN_SCENES}/grains_equilibrium_3d.prm)
+add_test(NAME ${name} COMMAND ${CHECK_GRAINS} settled ${name} 1 3 0.0018 0.05 3
+  0.25)
+set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
+  LABELS validation-long)
+set_tests_properties(${name} PROPERTIES FIXTURES_REQUIRED ${name}
+  LABELS validation-long)

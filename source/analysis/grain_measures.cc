@@ -70,6 +70,23 @@ namespace levelsinter
       const double radius2 = zeta_c * zeta_c + rho_c * rho_c - def(2);
       return {{zeta_c, rho_c, radius2 > 0 ? std::sqrt(radius2) : nan}};
     }
+
+    // The circle of the fit with its centre on the line of centres (rho_c
+    // = 0): minimise sum (z + D zeta + F)^2. (zeta_c, 0, R); NaN without
+    // enough points.
+    std::array<double, 3>
+    fitted_axial_circle(const double *m)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const double det = m[0] * m[5] - m[2] * m[2];
+      if (!(m[5] > 0) || !(std::abs(det) > 1e-14 * m[0] * m[5]))
+        return {{nan, nan, nan}};
+      const double D = (-m[6] * m[5] + m[8] * m[2]) / det;
+      const double F = (-m[8] * m[0] + m[6] * m[2]) / det;
+      const double zeta_c  = -D / 2;
+      const double radius2 = zeta_c * zeta_c - F;
+      return {{zeta_c, 0., radius2 > 0 ? std::sqrt(radius2) : nan}};
+    }
   } // namespace
 
   template <int dim>
@@ -147,6 +164,7 @@ namespace levelsinter
     // circle meets the plane) and on the whole grain (radius and centre).
     const auto boundaries = grain_geometry::find_grain_boundaries(alpha, cells);
     const unsigned int  nb = boundaries.size();
+    const bool revolution = alpha.measure().template body_dimension<dim>() == 3;
     std::vector<double> moments(nb * 8 * n_moments, 0.);
     const double        inner = 1.5 * grains.kernel_width();
     const auto          fit    = [&](const unsigned int b,
@@ -245,27 +263,38 @@ namespace levelsinter
         distance_change_sum += distance_change;
         // The approach rate of the last step's contact, and the radius and
         // root curvature it was computed from (at the step's start).
-        double rate = nan, root_curvature = nan, rate_radius = nan;
+        double rate = nan, root_curvature = nan, rate_radius = nan,
+               explicit_root = nan;
         for (const auto &contact : grains.contacts())
           if (contact.boundary.i == b.i && contact.boundary.j == b.j)
             {
               rate           = contact.approach_rate;
               root_curvature = contact.root_curvature;
+              explicit_root  = contact.explicit_root_curvature;
               rate_radius    = contact.boundary.radius;
               rate_sum += rate;
               ++n_rates;
             }
-        // Where the near circle meets the plane zeta = 0 its outward normal
-        // has the component -zeta_c / R along +zeta, -cos(psi/2) on j's
-        // side (centre at zeta_c > 0 for psi < 180 degrees), +cos(psi/2)
-        // on i's. The means over the sides and ends with a fit.
+        // On a body of revolution (3D, axisymmetric) the near circle has
+        // its centre on the line of centres, the axis of the pair: the
+        // free circle's centre is fitted from a short arc next to the
+        // grain's widest section, where rho hardly changes, and scattered
+        // from 0 to 111 degrees between rows in 3D (doc/validation.md). In
+        // 2D each end is a free circle (the centred one reads a neck that
+        // is still opening 5-15 degrees lower). Where it meets the plane
+        // zeta = 0 its outward normal has the component -zeta_c / R along
+        // +zeta, -cos(psi/2) on j's side (centre at zeta_c > 0 for psi <
+        // 180 degrees), +cos(psi/2) on i's. The means over the sides and
+        // ends with a fit.
         const unsigned int k = &b - boundaries.data();
         double cos_half = 0, fit_radius = 0, centre[2] = {0, 0};
         unsigned int n_near = 0, n_whole = 0, n_centre[2] = {0, 0};
         for (unsigned int side = 0; side < 2; ++side)
           for (unsigned int end = 0; end < 2; ++end)
             {
-              const auto near = fitted_circle(fit(k, 0, side, end));
+              const auto near = revolution ?
+                                  fitted_axial_circle(fit(k, 0, side, end)) :
+                                  fitted_circle(fit(k, 0, side, end));
               if (std::isfinite(near[2]))
                 {
                   cos_half += (side == 1 ? near[0] : -near[0]) / near[2];
@@ -301,7 +330,8 @@ namespace levelsinter
                         root_curvature,
                         dihedral_angle,
                         n_whole > 0 ? fit_radius / n_whole : nan,
-                        circle_distance});
+                        circle_distance,
+                        explicit_root});
       }
     std::vector<double> values = {double(n_grains),
                                   double(nb),
@@ -350,7 +380,8 @@ namespace levelsinter
                                      "root_curvature",
                                      "dihedral_angle",
                                      "fitted_radius",
-                                     "fitted_centre_distance"},
+                                     "fitted_centre_distance",
+                                     "root_curvature_explicit"},
             comm,
             kept_rows);
         for (const auto &row : rows)

@@ -94,25 +94,54 @@ namespace levelsinter
   GrainBoundaryDiffusion<dim>::kernel_sums(
     const LevelSetField<dim>        &alpha,
     const MixedCurvatureSolver<dim> *geometry,
-    const bool                       kink) const
+    const bool                       kink,
+    const bool                       explicit_curvature) const
   {
     // Per boundary, over the discrete interface: the deposition's volume
-    // rate per unit speed, int I_h(w N) . n (W), and int I_h(w kappa) (with
-    // @p geometry's N and kappa), and int I_h(w); one pass for all.
+    // rate per unit speed, int I_h(w N) . n (W), int I_h(w kappa) (with
+    // @p geometry's N and kappa), int I_h(w) and, with
+    // @p explicit_curvature, int I_h(w) (div N + mu); one pass for all.
     const unsigned int  nb = boundaries.size();
-    std::vector<double> sums(3 * nb, 0.);
+    std::vector<double> sums(4 * nb, 0.);
     std::vector<types::global_dof_index> indices(alpha.fe().n_dofs_per_cell());
-    std::vector<double>                  w(indices.size());
+    std::vector<double>                  w(indices.size()), curvature;
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.surface_flags =
-      update_values | update_JxW_values | update_normal_vectors;
+      update_values | update_JxW_values | update_normal_vectors |
+      (explicit_curvature ? update_gradients | update_quadrature_points :
+                            update_default);
     integrands.on_surface = [&](const auto &cell, const auto &values) {
       // Q1: the cell's dofs are its vertices, in order.
       cell->get_dof_indices(indices);
+      bool cell_has_curvature = false;
       for (unsigned int b = 0; b < nb; ++b)
         {
           if (!kernel_weights(boundaries[b], cell, w, kink))
             continue;
+          if (explicit_curvature && !cell_has_curvature)
+            {
+              // div N + mu at the points: the curvature of the state, as
+              // the kappa row holds it before the implicit term (with the
+              // hoop term N_r / r on a body of revolution).
+              const auto &normals = geometry->nodal_normals();
+              curvature.assign(values.n_quadrature_points, 0.);
+              for (const unsigned int q : values.quadrature_point_indices())
+                {
+                  double radial = 0;
+                  for (unsigned int v = 0; v < indices.size(); ++v)
+                    {
+                      curvature[q] +=
+                        values.shape_value(v, q) * potential(indices[v]);
+                      radial += values.shape_value(v, q) * normals[0](indices[v]);
+                      for (unsigned int c = 0; c < dim; ++c)
+                        curvature[q] +=
+                          values.shape_grad(v, q)[c] * normals[c](indices[v]);
+                    }
+                  curvature[q] += radial * alpha.measure().inverse_radius(
+                                             values.quadrature_point(q));
+                }
+              cell_has_curvature = true;
+            }
           for (const unsigned int q : values.quadrature_point_indices())
             {
               double         weight = 0, weighted_kappa = 0;
@@ -130,9 +159,11 @@ namespace levelsinter
                     }
                 }
               const double JxW = alpha.measure().JxW(values, q);
-              sums[3 * b] += weighted_normal * values.normal_vector(q) * JxW;
-              sums[3 * b + 1] += weighted_kappa * JxW;
-              sums[3 * b + 2] += weight * JxW;
+              sums[4 * b] += weighted_normal * values.normal_vector(q) * JxW;
+              sums[4 * b + 1] += weighted_kappa * JxW;
+              sums[4 * b + 2] += weight * JxW;
+              if (explicit_curvature)
+                sums[4 * b + 3] += weight * curvature[q] * JxW;
             }
         }
     };
@@ -201,10 +232,10 @@ namespace levelsinter
     const auto          sums = kernel_sums(alpha, nullptr, kink);
     std::vector<double> scale(boundaries.size(), 0.);
     for (unsigned int b = 0; b < boundaries.size(); ++b)
-      if (sums[3 * b + 2] > 0)
+      if (sums[4 * b + 2] > 0)
         scale[b] = parameters.triple_line_turning() *
                    boundaries[b].perimeter * boundaries[b].area_in_domain /
-                   boundaries[b].area / sums[3 * b + 2];
+                   boundaries[b].area / sums[4 * b + 2];
     // Every cell holding a node sees the same kernels there
     // (kernel_weights' reach), so each writes the same sum.
     mu = 0;
@@ -223,6 +254,10 @@ namespace levelsinter
               mu(i) = value[v];
         }
     mu.compress(VectorOperation::insert);
+    potential.reinit(alpha.locally_owned(),
+                     alpha.locally_relevant(),
+                     alpha.dof_handler().get_communicator());
+    potential = mu;
   }
 
   template <int dim>
@@ -236,21 +271,30 @@ namespace levelsinter
     if (!boundaries_current)
       find_boundaries(alpha);
     boundaries_current = false;
+    // With the sharp condition the explicit curvature is measured too (its
+    // potential mu is that of this state: triple_line_potential() ran
+    // before the surface-diffusion solve).
+    const bool read_explicit =
+      kink_width > 0 && potential.size() == alpha.dof_handler().n_dofs();
     const unsigned int nb   = boundaries.size();
-    const auto         sums = kernel_sums(alpha, &surface_diffusion.geometry());
+    const auto         sums =
+      kernel_sums(alpha, &surface_diffusion.geometry(), false, read_explicit);
 
     // A boundary whose triple line the kernel does not see on the
     // interface has no neck to deposit at: no contact.
     last_contacts.clear();
     std::vector<double> deposition_weight;
     for (unsigned int b = 0; b < nb; ++b)
-      if (sums[3 * b] > 0 && sums[3 * b + 2] > 0)
+      if (sums[4 * b] > 0 && sums[4 * b + 2] > 0)
         {
           Contact contact;
           contact.boundary       = boundaries[b];
-          contact.root_curvature = sums[3 * b + 1] / sums[3 * b + 2];
+          contact.root_curvature = sums[4 * b + 1] / sums[4 * b + 2];
+          if (read_explicit)
+            contact.explicit_root_curvature =
+              sums[4 * b + 3] / sums[4 * b + 2];
           last_contacts.push_back(contact);
-          deposition_weight.push_back(sums[3 * b]);
+          deposition_weight.push_back(sums[4 * b]);
         }
     solve_grain_velocities();
 

@@ -9,6 +9,7 @@
 #include <levelsinter/mechanisms/surface_diffusion.h>
 #include <levelsinter/scene/grain_boundary_parameters.h>
 
+#include <limits>
 #include <vector>
 
 namespace levelsinter
@@ -91,6 +92,11 @@ namespace levelsinter
       grain_geometry::GrainBoundary<dim> boundary;
       // The kernel's mean of the surface's curvature about the triple line.
       double root_curvature = 0;
+      // With the sharp condition, the same mean of the explicit curvature
+      // div N + mu, free of the kappa row's dt term (doc/numerics.md, "The
+      // root curvature's bias"); a measurement, the law reads
+      // root_curvature. NaN without the condition.
+      double explicit_root_curvature = std::numeric_limits<double>::quiet_NaN();
       // u = (V_i - V_j) . n, positive when the grains approach.
       double approach_rate = 0;
     };
@@ -142,12 +148,16 @@ namespace levelsinter
                    const bool           kink = false) const;
 
     // Per boundary: int over the interface of I_h(w N) . n, I_h(w kappa)
-    // (N and kappa of @p geometry; zero without) and I_h(w), w the kernel
-    // of kernel_weights(..., @p kink).
+    // (N and kappa of @p geometry; zero without), I_h(w) and, with
+    // @p explicit_curvature (and @p geometry), I_h(w) (div N + mu) (the
+    // explicit curvature: N's divergence at the interface plus the
+    // triple-line potential of the last triple_line_potential(); else
+    // zero), w the kernel of kernel_weights(..., @p kink).
     std::vector<double>
     kernel_sums(const LevelSetField<dim>        &alpha,
                 const MixedCurvatureSolver<dim> *geometry,
-                const bool                       kink = false) const;
+                const bool                       kink               = false,
+                const bool                       explicit_curvature = false) const;
 
     // Grain boundaries, root curvatures and the trial velocities from the
     // level set and the accepted centres.
@@ -186,6 +196,9 @@ namespace levelsinter
     // Whether boundaries are those of the state compute() sees (found by
     // triple_line_potential() before the surface-diffusion solve).
     bool boundaries_current = false;
+    // The triple-line potential mu of the last triple_line_potential()
+    // (ghosted, on the level set's DoFs).
+    TrilinosWrappers::MPI::Vector potential;
     // Per contact: the deposition speed per unit kernel weight, Q / W.
     std::vector<double>           deposition_speed;
     double                        deposition_width = 0;
