@@ -71,6 +71,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -80,6 +81,20 @@ using namespace levelsinter;
 
 namespace
 {
+  // ctest -j runs tests of the same mode, level and steps but other
+  // settings side by side: a hash of the settings keeps their run
+  // directories apart (they shared one and read each other's metrics).
+  std::string
+  settings_tag(const study::Options &options)
+  {
+    std::string all;
+    for (const auto &[key, value] : options.overrides)
+      all += key + '=' + value + ';';
+    for (const auto &[name, value] : options.limits)
+      all += name + '=' + std::to_string(value) + ';';
+    return "_" + std::to_string(std::hash<std::string>{}(all));
+  }
+
   // A numeric setting given as --name value, or its default.
   double
   setting(const study::Options &options,
@@ -277,7 +292,7 @@ namespace
                 std::to_string(mode) + "_l" + std::to_string(level) + "_s" +
                 std::to_string(steps) +
                 (base.volume_correction.enabled ? "_vc" : "") +
-                (sign < 0 ? "_minus" : "");
+                (sign < 0 ? "_minus" : "") + settings_tag(options);
               std::filesystem::create_directories(output);
               auto overrides = options.overrides;
               overrides.insert(
@@ -488,7 +503,8 @@ namespace
       "validation_output/sd_neck_" +
       (options.csv.empty() ? std::filesystem::path(scene_file).stem() :
                              std::filesystem::path(options.csv).stem())
-        .string();
+        .string() +
+      settings_tag(options);
     std::filesystem::create_directories(output);
     auto overrides = options.overrides;
     overrides.insert(overrides.end(),
