@@ -75,14 +75,23 @@ set_tests_properties(coupled_packing_27_3d_np2 PROPERTIES
 # (doc/performance.md, "Session 22"), a change of the discretisation in the
 # atmosphere's compressible layer: the volume change and the correction
 # speed moved by 8e-3, the near-miss gap by 7.5e-3, the centre-distance
-# change by 1e-3, the necks, density and largest speed by at most 1.8e-4.
-# Measured: the solver paths that keep the discretisation differ by at
-# most 1.9e-4 (smoothed against plain aggregation; 9.6e-5 for 2 ranks
-# against 1), in the near-zero volume change and correction speed, 1.2e-5
-# in the largest speed, 1e-6 in the necks; changes of the physics move it
-# by far more (CFL 0.45 instead of 0.5: 13 % in the volume change, 5 % in
-# the largest speed; lambda = 2.5: 36 % in the step). A speed-up that
-# keeps the discretisation passes; one that changes it must say so here.
+# change by 1e-3, the necks, density and largest speed by at most 1.8e-4;
+# and again on 28 Nov 2026 (session 23), when the scene took the
+# solid-only elastic problem and the recovered gradient of xi (doc/
+# performance.md, "Session 23"), which moved the necks by 4-7 %, the
+# density by 0.6 %, the largest speed by 52 %, the step by 110 % and the
+# small differences (volume change, correction speed, centre-distance
+# change, near-miss gap) by 60-150 %. The solid space's solution is more
+# sensitive to the solver's path than the continuous one's was (1.9e-4):
+# 2 ranks against 1 move the columns below by at most 1.8e-3 (the largest
+# speed) and the small differences by up to 2.5e-2 (the centre-distance
+# change), smoothed against plain aggregation by 8.6e-4 and 5e-2 (the
+# volume change; archive/solid_space_packing_23/guard_solver_paths/). So
+# two limits: 5e-3 on every column but the small differences, 0.15 on
+# those. Changes of the physics move it by far more (CFL 0.45 instead of
+# 0.5: 13 % in the volume change, 5 % in the largest speed; lambda = 2.5:
+# 36 % in the step). A speed-up that keeps the discretisation passes; one
+# that changes it must say so here.
 add_test(NAME coupled_packing_8_3d COMMAND $<TARGET_FILE:levelsinter>
   --overwrite --set "Domain/Upper corner=0.6,0.6,0.6"
   --set "Domain/Subdivisions=2,2,2"
@@ -94,7 +103,13 @@ add_test(NAME coupled_packing_8_3d COMMAND $<TARGET_FILE:levelsinter>
 set_tests_properties(coupled_packing_8_3d PROPERTIES
   FIXTURES_SETUP coupled_packing_8_3d)
 metrics_unchanged(coupled_packing_8_3d_unchanged coupled_packing_8_3d
-  coupled_packing_8_3d_metrics.csv 2e-3
+  coupled_packing_8_3d_metrics.csv 5e-3
+  transport_iterations surface_diffusion_iterations
+  surface_diffusion_solve_cpu_time volume_diffusion_mechanics_iterations
+  volume_diffusion_xi_iterations volume_change volume_correction_speed
+  centre_distance_change_mean near_miss_gap_min)
+metrics_unchanged(coupled_packing_8_3d_small_differences
+  coupled_packing_8_3d coupled_packing_8_3d_metrics.csv 0.15
   transport_iterations surface_diffusion_iterations
   surface_diffusion_solve_cpu_time volume_diffusion_mechanics_iterations
   volume_diffusion_xi_iterations)
