@@ -48,6 +48,7 @@ namespace levelsinter
       s.interior_offset      = p.interior_offset;
       s.linear_extrapolation = p.linear_extrapolation;
       s.recovered_gradient   = p.recovered_gradient;
+      s.boundary_flux        = p.boundary_flux;
       s.solver_tolerance     = p.solver_tolerance;
       s.max_iterations       = p.max_iterations;
       s.symmetry_boundaries  = symmetry_planes;
