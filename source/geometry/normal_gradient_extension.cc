@@ -37,8 +37,9 @@ namespace levelsinter
     // count as not reached.
     constexpr double reached_fraction = 0.5;
 
-    // Least interface support int_Gamma phi_i ds of a boundary-flux source
-    // node, in h_min^(dim - 1) (compute_flux_sources()).
+    // Least interface support int_Gamma w_i ds of a boundary-flux source
+    // node, in h_min^(dim - 1) (compute_flux_sources()): about half a
+    // cell's width of interface in the cells at the node.
     constexpr double flux_support_fraction = 0.5;
   } // namespace
 
@@ -179,23 +180,42 @@ namespace levelsinter
     surface_mass.compress(VectorOperation::add);
     flux.compress(VectorOperation::add);
 
-    // The quotient's error is that of grad p_h over phi_i's support divided
-    // by the interface support: a node whose shape function the interface
-    // only grazes would amplify it. int_Gamma phi_i = (1 - delta / h) h^(dim
-    // - 1) for a plane at distance delta from the node, so the nodes of a
-    // plane's nearer side (delta <= h / 2) are sources: every interface
-    // point has one in its cell; the others take the carried values.
+    // The test function of node i is w_i = sum of phi_j over the nodes j
+    // of the cells at i (each once): 1 on those cells, 0 one ring further,
+    // so int_Gamma w_i ds is about the interface length (area) across
+    // those cells, also where the interface only grazes phi_i's own
+    // support (whose quotient would amplify the error of grad p_h), and
+    // every vertex of a cut cell gets a value. The sums over j are the
+    // products with the level set's pattern filled with ones.
+    TrilinosWrappers::SparseMatrix patch(level_set.sparsity_pattern());
+    for (const auto row : owned)
+      for (auto entry = patch.begin(row); entry != patch.end(row); ++entry)
+        entry->value() = 1;
+    Vector owned_mass(owned, comm), owned_flux(owned, comm);
+    for (const auto i : owned)
+      {
+        owned_mass(i) = surface_mass(i);
+        owned_flux(i) = flux(i);
+      }
+    owned_mass.compress(VectorOperation::insert);
+    owned_flux.compress(VectorOperation::insert);
+    Vector patch_mass(owned, comm), patch_flux(owned, comm);
+    patch.vmult(patch_mass, owned_mass);
+    patch.vmult(patch_flux, owned_flux);
+
+    // A node whose cells the interface only clips at a corner takes the
+    // carried values of its neighbours instead.
     const double h_min = finest_cell_size(dofs.get_triangulation());
     const double least_support =
       flux_support_fraction * std::pow(h_min, dim - 1);
     is_source = 0;
     values    = 0;
     for (const auto i : owned)
-      if (surface_mass(i) >= least_support &&
+      if (patch_mass(i) >= least_support &&
           !level_set.constraints().is_constrained(i))
         {
           is_source(i) = 1;
-          values(i)    = flux(i) / surface_mass(i);
+          values(i)    = patch_flux(i) / patch_mass(i);
         }
     is_source.compress(VectorOperation::insert);
     values.compress(VectorOperation::insert);

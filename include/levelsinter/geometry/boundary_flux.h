@@ -18,20 +18,22 @@ namespace levelsinter
    *
    *   int_Gamma xi w ds = int_S grad p . grad w dx,
    *
-   * so with w = phi_i, the level set's Q1 shape function of node i, and the
-   * interface mass lumped,
+   * so for a test function w that is a sum of the level set's Q1 shape
+   * functions phi_j, with the interface mass lumped,
    *
-   *   xi_i = int_S grad p_h . grad phi_i dx / int_Gamma phi_i ds.
+   *   xi_w = sum_j int_S grad p_h . grad phi_j dx / sum_j int_Gamma phi_j ds
+   *
+   * (NormalGradientExtension sums over the nodes of the cells at a node).
    *
    * Both integrals use the sharp cut-cell quadrature (deal.II NonMatching)
    * in the scene's measure (r dr dz in an axisymmetric scene, where Green's
    * formula holds for the axisymmetric Laplacian). The volume integral
-   * reads p only in the solid and averages grad p_h over phi_i's support
+   * reads p only in the solid and averages grad p_h over w's support
    * instead of reading it at one point: no interior offset, no atmosphere
    * (doc/numerics.md, "Volume diffusion: xi as the boundary flux").
    *
-   * Accumulated here as the two integrals: @p surface_mass gets
-   * int_Gamma phi_i ds and @p flux gets int_S grad p . grad phi_i over the
+   * Accumulated here per node j as the two integrals: @p surface_mass gets
+   * int_Gamma phi_j ds and @p flux gets int_S grad p . grad phi_j over the
    * locally owned cells (ghosted vectors with writable ghosts; the caller
    * compresses with VectorOperation::add and divides where the surface
    * mass is large enough for the quotient to be meaningful). p is
