@@ -1,8 +1,8 @@
 #include <deal.II/fe/fe_values.h>
 
 #include <levelsinter/geometry/boundary_flux.h>
+#include <levelsinter/geometry/recovered_gradient.h>
 #include <levelsinter/level_set/interface_measures.h>
-#include <levelsinter/level_set/same_cell.h>
 
 #include <vector>
 
@@ -17,14 +17,10 @@ namespace levelsinter
                     TrilinosWrappers::MPI::Vector       &surface_mass,
                     TrilinosWrappers::MPI::Vector       &flux)
   {
-    // p at the level set's nodes, then its gradient on the solid part with
-    // the level set's Q1 shape functions: exact, since p is Q1 on each cell.
-    const Quadrature<dim> vertices(level_set.fe().get_unit_support_points());
-    FEValues<dim>         field_values(field_dofs.get_fe(),
-                               vertices,
-                               update_values);
-    const FEValuesExtractors::Scalar     pressure(component);
-    std::vector<double>                  nodal(vertices.size());
+    SolidPressureGradient<dim> pressure_gradient(level_set,
+                                                 field_dofs,
+                                                 component,
+                                                 field);
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
     const SceneMeasure                  &measure = level_set.measure();
 
@@ -32,17 +28,13 @@ namespace levelsinter
     integrands.solid_flags   = update_gradients | update_JxW_values;
     integrands.surface_flags = update_values | update_JxW_values;
     integrands.on_solid = [&](const auto &cell, const FEValues<dim> &solid) {
-      field_values.reinit(same_cell(cell, field_dofs));
-      field_values[pressure].get_function_values(field, nodal);
+      const auto &gradients = pressure_gradient.evaluate(cell, solid);
       cell->get_dof_indices(indices);
       for (unsigned int q = 0; q < solid.n_quadrature_points; ++q)
         {
-          Tensor<1, dim> gradient;
-          for (unsigned int v = 0; v < indices.size(); ++v)
-            gradient += nodal[v] * solid.shape_grad(v, q);
           const double JxW = measure.JxW(solid, q);
           for (unsigned int i = 0; i < indices.size(); ++i)
-            flux(indices[i]) += gradient * solid.shape_grad(i, q) * JxW;
+            flux(indices[i]) += gradients[q] * solid.shape_grad(i, q) * JxW;
         }
     };
     integrands.on_surface =
