@@ -52,10 +52,16 @@ ranks_agree(volume_diffusion_flux vd_flux ${VD_GRAINS} 1e-3
   --set "Output/Metrics interval=1")
 
 # 3D: the coupled pair's CI case of volume_diffusion_solid_two_spheres_3d
-# (R/h = 8, 3 steps) with xi as the boundary flux, and on 1 and 2 ranks.
+# (R/h = 8, 3 steps of dt = 1e-3) with xi as the boundary flux, and on 1
+# and 2 ranks. Measured: neck 0.04925 -> 0.05667 (x 1.151; lambda = 3 in
+# the solid space x 1.095: at R/h = 8 the young neck is thinner than
+# 2 lambda, where lambda reads nothing), |dV/V| at most 7.9e-6, 3.6 s CPU.
+# Limits: growth 1.12 (between the two), volume as the solid space's check.
+# 1 against 2 ranks: 3.8e-6 (the volume change), the neck 1.8e-9; checked
+# at 2e-5 as the solid space.
 add_test(NAME volume_diffusion_flux_two_spheres_3d COMMAND ${SD_VALIDATE}
   neck ${COUPLED_PAIR_3D} 3 --sample-interval 1 ${COUPLED_PAIR_3D_COARSE}
-  ${FLUX_SOLID} --csv flux_two_spheres_ci_3d.csv --min-neck-growth 1.04
+  ${FLUX_SOLID} --csv flux_two_spheres_ci_3d.csv --min-neck-growth 1.12
   --max-volume-change 3e-4)
 ranks_agree(volume_diffusion_flux_3d flux_3d ${COUPLED_PAIR_3D} 2e-5
   "transport_iterations;surface_diffusion_iterations;surface_diffusion_solve_cpu_time;volume_diffusion_mechanics_iterations;volume_diffusion_xi_iterations"
