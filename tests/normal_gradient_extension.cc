@@ -242,6 +242,7 @@ namespace
       const double                   offset,
       const double                   jump,
       const bool                     constant,
+      const bool                     flux,
       const double                   band,
       const double                   thickness,
       const double                   bar = 0)
@@ -291,6 +292,7 @@ namespace
     typename NormalGradientExtension<dim>::Settings settings;
     settings.interior_offset      = offset;
     settings.linear_extrapolation = !constant;
+    settings.boundary_flux        = flux;
     NormalGradientExtension<dim> extension(filter, settings, timer);
     extension.setup(level_set);
     Result result;
@@ -383,6 +385,7 @@ namespace
       std::cout << dim << "D, p = " << field << ", lambda = " << offset
                 << " h, jump " << jump
                 << (option(options, "constant", 0) > 0 ? ", constant" : "")
+                << (option(options, "flux", 0) > 0 ? ", boundary flux" : "")
                 << "\n"
                 << " level  R/h   max error   rms error  order  unsourced"
                    "  GMRES\n";
@@ -397,6 +400,7 @@ namespace
                                   offset,
                                   jump,
                                   option(options, "constant", 0) > 0,
+                                  option(options, "flux", 0) > 0,
                                   option(options, "band", 0),
                                   option(options, "filter", 6));
         rms.push_back(r.rms_error);
@@ -453,6 +457,7 @@ namespace
                             option(options, "offset", 3),
                             0,
                             option(options, "constant", 0) > 0,
+                            option(options, "flux", 0) > 0,
                             0,
                             6,
                             0.04);

@@ -7,6 +7,7 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/geometry/boundary_flux.h>
 #include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/geometry/normal_gradient_extension.h>
@@ -35,6 +36,11 @@ namespace levelsinter
     // Nodes with r below this fraction of the decay over the offset itself
     // count as not reached.
     constexpr double reached_fraction = 0.5;
+
+    // Least interface support int_Gamma w_i ds of a boundary-flux source
+    // node, in h_min^(dim - 1) (compute_flux_sources()): about half a
+    // cell's width of interface in the cells at the node.
+    constexpr double flux_support_fraction = 0.5;
   } // namespace
 
   template <int dim>
@@ -155,6 +161,68 @@ namespace levelsinter
 
   template <int dim>
   void
+  NormalGradientExtension<dim>::compute_flux_sources(
+    const LevelSetField<dim> &level_set,
+    const DoFHandler<dim>    &field_dofs,
+    const unsigned int        component,
+    const Vector             &field,
+    Vector                   &is_source,
+    Vector                   &values) const
+  {
+    const auto    &dofs  = level_set.dof_handler();
+    const MPI_Comm comm  = dofs.get_communicator();
+    const auto    &owned = level_set.locally_owned();
+    Vector         surface_mass, flux;
+    surface_mass.reinit(owned, level_set.locally_relevant(), comm, true);
+    flux.reinit(owned, level_set.locally_relevant(), comm, true);
+    add_boundary_flux<dim>(
+      level_set, field_dofs, component, field, surface_mass, flux);
+    surface_mass.compress(VectorOperation::add);
+    flux.compress(VectorOperation::add);
+
+    // The test function of node i is w_i = sum of phi_j over the nodes j
+    // of the cells at i (each once): 1 on those cells, 0 one ring further,
+    // so int_Gamma w_i ds is about the interface length (area) across
+    // those cells, also where the interface only grazes phi_i's own
+    // support (whose quotient would amplify the error of grad p_h), and
+    // every vertex of a cut cell gets a value. The sums over j are the
+    // products with the level set's pattern filled with ones.
+    TrilinosWrappers::SparseMatrix patch(level_set.sparsity_pattern());
+    for (const auto row : owned)
+      for (auto entry = patch.begin(row); entry != patch.end(row); ++entry)
+        entry->value() = 1;
+    Vector owned_mass(owned, comm), owned_flux(owned, comm);
+    for (const auto i : owned)
+      {
+        owned_mass(i) = surface_mass(i);
+        owned_flux(i) = flux(i);
+      }
+    owned_mass.compress(VectorOperation::insert);
+    owned_flux.compress(VectorOperation::insert);
+    Vector patch_mass(owned, comm), patch_flux(owned, comm);
+    patch.vmult(patch_mass, owned_mass);
+    patch.vmult(patch_flux, owned_flux);
+
+    // A node whose cells the interface only clips at a corner takes the
+    // carried values of its neighbours instead.
+    const double h_min = finest_cell_size(dofs.get_triangulation());
+    const double least_support =
+      flux_support_fraction * std::pow(h_min, dim - 1);
+    is_source = 0;
+    values    = 0;
+    for (const auto i : owned)
+      if (patch_mass(i) >= least_support &&
+          !level_set.constraints().is_constrained(i))
+        {
+          is_source(i) = 1;
+          values(i)    = patch_flux(i) / patch_mass(i);
+        }
+    is_source.compress(VectorOperation::insert);
+    values.compress(VectorOperation::insert);
+  }
+
+  template <int dim>
+  void
   NormalGradientExtension<dim>::compute_slopes(
     const LevelSetField<dim>      &level_set,
     const std::array<Vector, dim> &gradient,
@@ -238,7 +306,7 @@ namespace levelsinter
   template <int dim>
   void
   NormalGradientExtension<dim>::assemble(const LevelSetField<dim> &level_set,
-                                         const Vector             &is_source)
+                                         const Vector             &fixed)
   {
     const auto    &dofs = level_set.dof_handler();
     const MPI_Comm comm = dofs.get_communicator();
@@ -317,7 +385,8 @@ namespace levelsinter
     touched.compress(VectorOperation::add);
     cells.compress(VectorOperation::add);
 
-    // Source nodes: xi = its value (Eq. 110); untouched nodes: xi = 0. The
+    // Fixed (source) nodes: xi = its value (Eq. 110); untouched nodes:
+    // xi = 0. The
     // band's edge in the solid is an inflow boundary of N . grad u = 0 (N
     // points out of the solid): without data there u is only fixed up to
     // the weak reaction's decay along each characteristic, and the
@@ -333,7 +402,7 @@ namespace levelsinter
           touched(i) > 0 && touched(i) < cells(i) &&
           filter.distance(level_set.alpha()(i)) < 0 &&
           !level_set.constraints().is_constrained(i);
-        if (is_source(i) > 0 || touched(i) == 0 || inflow_edge)
+        if (fixed(i) > 0 || touched(i) == 0 || inflow_edge)
           identity_rows.push_back(i);
       }
     matrix.clear_rows(identity_rows, 1.);
@@ -341,53 +410,31 @@ namespace levelsinter
 
   template <int dim>
   unsigned int
-  NormalGradientExtension<dim>::solve(const LevelSetField<dim> &level_set,
-                                      const DoFHandler<dim>    &field_dofs,
-                                      const unsigned int        component,
-                                      const Vector             &field)
+  NormalGradientExtension<dim>::carry(const LevelSetField<dim> &level_set,
+                                      const Vector             &fixed,
+                                      const std::vector<const Vector *> &data,
+                                      std::vector<Vector> &solutions)
   {
-    const auto    &dofs  = level_set.dof_handler();
-    const MPI_Comm comm  = dofs.get_communicator();
-    const auto    &owned = level_set.locally_owned();
-    Vector is_source(owned, comm), values(owned, comm), slopes(owned, comm);
-    std::array<Vector, dim> gradient;
     {
       TimerOutput::Scope scope(timer, "normal gradient: assembly");
-      normals = levelsinter::nodal_normals(level_set,
-                                           filter,
-                                           settings.normals_from_distance,
-                                           settings.symmetry_boundaries);
-      compute_sources(
-        level_set, field_dofs, component, field, is_source, values, gradient);
-      if (settings.linear_extrapolation)
-        compute_slopes(level_set, gradient, is_source, values, slopes);
-      if (is_source.l1_norm() == 0)
-        throw std::runtime_error(
-          "volume diffusion: no level-set node lies deeper than lambda = " +
-          std::to_string(settings.interior_offset) +
-          " cells in the solid, so the pressure gradient cannot be read "
-          "anywhere; refine the mesh, lower 'Volume diffusion/Interior "
-          "offset' or raise 'Level set/Filter thickness' (lambda must stay "
-          "below 0.8 E, where the level set still has a slope)");
-      assemble(level_set, is_source);
+      assemble(level_set, fixed);
     }
-
     TimerOutput::Scope scope(timer, "normal gradient: solve");
+    const auto    &owned = level_set.locally_owned();
+    const MPI_Comm comm  = level_set.dof_handler().get_communicator();
     preconditioner.initialize(matrix);
-    // The carried g (or g - d eta), eta, and the reach r for the data 1.
-    std::array<Vector, 3> solutions = {
-      {Vector(owned, comm), Vector(owned, comm), Vector(owned, comm)}};
-    const std::array<const Vector *, 3> data = {{&values, &slopes, &is_source}};
-    unsigned int                        iterations = 0;
-    for (unsigned int k = 0; k < 3; ++k)
+    unsigned int iterations = 0;
+    solutions.clear();
+    for (const Vector *rhs : data)
       {
+        solutions.emplace_back(owned, comm);
         SolverControl control(settings.max_iterations,
-                              settings.solver_tolerance * data[k]->l2_norm());
+                              settings.solver_tolerance * rhs->l2_norm());
         TrilinosWrappers::SolverGMRES gmres(control);
-        if (data[k]->l2_norm() > 0)
+        if (rhs->l2_norm() > 0)
           try
             {
-              gmres.solve(matrix, solutions[k], *data[k], preconditioner);
+              gmres.solve(matrix, solutions.back(), *rhs, preconditioner);
             }
           catch (const SolverControl::NoConvergence &e)
             {
@@ -402,28 +449,150 @@ namespace levelsinter
               throw std::runtime_error(message.str());
             }
         iterations += control.last_step();
-        level_set.constraints().distribute(solutions[k]);
+        level_set.constraints().distribute(solutions.back());
       }
+    return iterations;
+  }
 
-    // Division by r undoes the reaction's decay. Where r is small no source is
-    // upstream: both are what SUPG leaks from the side, with weights of
-    // both signs, and their ratio is not bounded by the sources (measured
-    // 1.9 times their range in a bar thinner than 2 lambda), so xi = 0.
-    const double reach_floor =
-      reached_fraction * std::exp(-reaction * settings.interior_offset);
-    Vector owned_xi(owned, comm);
-    for (const auto i : owned)
-      owned_xi(i) = solutions[2](i) < reach_floor ?
-                      0. :
-                      (solutions[0](i) + filter.distance(level_set.alpha()(i)) *
-                                           solutions[1](i)) /
-                        solutions[2](i);
+  template <int dim>
+  unsigned int
+  NormalGradientExtension<dim>::carry_both_ways(
+    const LevelSetField<dim> &level_set,
+    const Vector             &is_source,
+    const Vector             &values,
+    Vector                   &owned_xi,
+    Vector                   &reach)
+  {
+    const auto    &owned = level_set.locally_owned();
+    const MPI_Comm comm  = level_set.dof_handler().get_communicator();
+    // The sources lie within a cell of the interface: the floor of the
+    // reach as for an offset of one cell.
+    const double reach_floor = reached_fraction * std::exp(-reaction);
+    Vector       fixed(owned, comm);
+    std::vector<Vector> solutions;
+    unsigned int        iterations = 0;
+    for (const double side : {1., -1.})
+      {
+        // The nodes on the other side are upstream of the sources: fixed
+        // at 0, so that each solve is an inflow problem from the interface
+        // (and its matrix regular without the reaction).
+        for (const auto i : owned)
+          fixed(i) = is_source(i) > 0 ||
+                         side * filter.distance(level_set.alpha()(i)) < 0 ?
+                       1. :
+                       0.;
+        fixed.compress(VectorOperation::insert);
+        if (side < 0)
+          for (auto &component : normals)
+            component *= -1.;
+        iterations += carry(level_set, fixed, {&values, &is_source}, solutions);
+        if (side < 0)
+          for (auto &component : normals)
+            component *= -1.;
+        for (const auto i : owned)
+          {
+            const double d = filter.distance(level_set.alpha()(i));
+            if (is_source(i) > 0)
+              {
+                owned_xi(i) = values(i);
+                reach(i)    = 1;
+              }
+            else if (side > 0 ? d >= 0 : d < 0)
+              {
+                reach(i)    = solutions[1](i);
+                owned_xi(i) = solutions[1](i) < reach_floor ?
+                                0. :
+                                solutions[0](i) / solutions[1](i);
+              }
+          }
+      }
+    owned_xi.compress(VectorOperation::insert);
+    reach.compress(VectorOperation::insert);
+    return iterations;
+  }
+
+  template <int dim>
+  unsigned int
+  NormalGradientExtension<dim>::solve(const LevelSetField<dim> &level_set,
+                                      const DoFHandler<dim>    &field_dofs,
+                                      const unsigned int        component,
+                                      const Vector             &field)
+  {
+    const auto    &dofs  = level_set.dof_handler();
+    const MPI_Comm comm  = dofs.get_communicator();
+    const auto    &owned = level_set.locally_owned();
+    Vector is_source(owned, comm), values(owned, comm), slopes(owned, comm);
+    {
+      TimerOutput::Scope scope(timer, "normal gradient: assembly");
+      normals = levelsinter::nodal_normals(level_set,
+                                           filter,
+                                           settings.normals_from_distance,
+                                           settings.symmetry_boundaries);
+      if (settings.boundary_flux)
+        compute_flux_sources(
+          level_set, field_dofs, component, field, is_source, values);
+      else
+        {
+          std::array<Vector, dim> gradient;
+          compute_sources(
+            level_set, field_dofs, component, field, is_source, values,
+            gradient);
+          if (settings.linear_extrapolation)
+            compute_slopes(level_set, gradient, is_source, values, slopes);
+        }
+      if (is_source.l1_norm() == 0)
+        throw std::runtime_error(
+          settings.boundary_flux ?
+            "volume diffusion: no level-set node has enough interface "
+            "support to read the pressure's boundary flux; is there an "
+            "interface in the mesh?" :
+            "volume diffusion: no level-set node lies deeper than lambda = " +
+              std::to_string(settings.interior_offset) +
+              " cells in the solid, so the pressure gradient cannot be read "
+              "anywhere; refine the mesh, lower 'Volume diffusion/Interior "
+              "offset' or raise 'Level set/Filter thickness' (lambda must "
+              "stay below 0.8 E, where the level set still has a slope)");
+    }
+
+    Vector       owned_xi(owned, comm), owned_reach(owned, comm);
+    unsigned int iterations = 0;
+    double       reach_floor;
+    if (settings.boundary_flux)
+      {
+        iterations  = carry_both_ways(
+          level_set, is_source, values, owned_xi, owned_reach);
+        reach_floor = reached_fraction * std::exp(-reaction);
+      }
+    else
+      {
+        // The carried g (or g - d eta), eta, and the reach r for the data 1.
+        std::vector<Vector> solutions;
+        iterations = carry(level_set,
+                           is_source,
+                           {&values, &slopes, &is_source},
+                           solutions);
+        // Division by r undoes the reaction's decay. Where r is small no
+        // source is upstream: both are what SUPG leaks from the side, with
+        // weights of both signs, and their ratio is not bounded by the
+        // sources (measured 1.9 times their range in a bar thinner than
+        // 2 lambda), so xi = 0.
+        reach_floor =
+          reached_fraction * std::exp(-reaction * settings.interior_offset);
+        for (const auto i : owned)
+          owned_xi(i) =
+            solutions[2](i) < reach_floor ?
+              0. :
+              (solutions[0](i) +
+               filter.distance(level_set.alpha()(i)) * solutions[1](i)) /
+                solutions[2](i);
+        owned_reach = solutions[2];
+      }
     xi = ghosted_from_owned(owned_xi,
                             level_set.constraints(),
                             level_set.locally_relevant());
 
     Vector reach(owned, level_set.locally_relevant(), comm);
-    reach = solutions[2];
+    reach = owned_reach;
     unsigned int cells = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())

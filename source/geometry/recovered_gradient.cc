@@ -9,6 +9,35 @@
 namespace levelsinter
 {
   template <int dim>
+  SolidPressureGradient<dim>::SolidPressureGradient(
+    const LevelSetField<dim>            &level_set,
+    const DoFHandler<dim>               &field_dofs,
+    const unsigned int                   component,
+    const TrilinosWrappers::MPI::Vector &field)
+    : field_dofs(field_dofs)
+    , field(field)
+    , vertices(level_set.fe().get_unit_support_points())
+    , field_values(field_dofs.get_fe(), vertices, update_values)
+    , pressure(component)
+    , nodal(vertices.size())
+  {}
+
+  template <int dim>
+  const std::vector<Tensor<1, dim>> &
+  SolidPressureGradient<dim>::evaluate(
+    const typename DoFHandler<dim>::active_cell_iterator &cell,
+    const FEValues<dim>                                  &solid)
+  {
+    field_values.reinit(same_cell(cell, field_dofs));
+    field_values[pressure].get_function_values(field, nodal);
+    gradients.assign(solid.n_quadrature_points, Tensor<1, dim>());
+    for (unsigned int q = 0; q < solid.n_quadrature_points; ++q)
+      for (unsigned int v = 0; v < nodal.size(); ++v)
+        gradients[q] += nodal[v] * solid.shape_grad(v, q);
+    return gradients;
+  }
+
+  template <int dim>
   void
   add_solid_gradient_projection(
     const LevelSetField<dim>                         &level_set,
@@ -18,28 +47,21 @@ namespace levelsinter
     TrilinosWrappers::MPI::Vector                    &mass,
     std::array<TrilinosWrappers::MPI::Vector, dim> &moments)
   {
-    // p at the level set's nodes, then its gradient on the solid part with
-    // the level set's Q1 shape functions: exact, since p is Q1 on each cell.
-    const Quadrature<dim> vertices(level_set.fe().get_unit_support_points());
-    FEValues<dim>         field_values(field_dofs.get_fe(),
-                               vertices,
-                               update_values);
-    const FEValuesExtractors::Scalar     pressure(component);
-    std::vector<double>                  nodal(vertices.size());
+    SolidPressureGradient<dim> pressure_gradient(level_set,
+                                                 field_dofs,
+                                                 component,
+                                                 field);
     std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
 
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.solid_flags = update_values | update_gradients |
                              update_JxW_values;
     integrands.on_solid    = [&](const auto &cell, const FEValues<dim> &solid) {
-      field_values.reinit(same_cell(cell, field_dofs));
-      field_values[pressure].get_function_values(field, nodal);
+      const auto &gradients = pressure_gradient.evaluate(cell, solid);
       cell->get_dof_indices(indices);
       for (unsigned int q = 0; q < solid.n_quadrature_points; ++q)
         {
-          Tensor<1, dim> gradient;
-          for (unsigned int v = 0; v < indices.size(); ++v)
-            gradient += nodal[v] * solid.shape_grad(v, q);
+          const Tensor<1, dim> &gradient = gradients[q];
           for (unsigned int i = 0; i < indices.size(); ++i)
             {
               const double weight = solid.shape_value(i, q) * solid.JxW(q);
@@ -51,6 +73,9 @@ namespace levelsinter
     };
     interface_measures::integrate_regions(level_set, integrands);
   }
+
+  template class SolidPressureGradient<2>;
+  template class SolidPressureGradient<3>;
 
   template void
   add_solid_gradient_projection<2>(

@@ -18,6 +18,14 @@ namespace levelsinter
     // 1/256 (the first unstable steps 176, 163, 150); the least.
     constexpr double measured_limit = 130;
 
+    // The same c with xi as the boundary flux ('Pressure gradient = flux',
+    // the solid pressure with ghost penalty 10): stable dt* = 5.6e-4,
+    // unstable 6.5e-4 at h = 1/128 (doc/validation.md, "Volume diffusion:
+    // xi as the boundary flux"), c = 16. Read at the interface, xi moves
+    // modes up to n ~ R / h that lambda = 6 cells filters out; measured at
+    // this h only.
+    constexpr double measured_flux_limit = 16;
+
     // The first dim components of a velocity-pressure vector as one vector
     // field.
     template <int dim>
@@ -48,6 +56,7 @@ namespace levelsinter
       s.interior_offset      = p.interior_offset;
       s.linear_extrapolation = p.linear_extrapolation;
       s.recovered_gradient   = p.recovered_gradient;
+      s.boundary_flux        = p.boundary_flux;
       s.solver_tolerance     = p.solver_tolerance;
       s.max_iterations       = p.max_iterations;
       s.symmetry_boundaries  = symmetry_planes;
@@ -81,7 +90,8 @@ namespace levelsinter
       // s_n = (2/3)(1 + nu) C_v gamma n (n^2 - 1) / R^3 (doc/numerics.md):
       // the decay rate of the finest modes, n ~ R / h, is proportional to
       // (2/3)(1 + nu) C_v gamma / h^3.
-      return parameters.time_step_factor * measured_limit /
+      return parameters.time_step_factor *
+             (parameters.boundary_flux ? measured_flux_limit : measured_limit) /
              (2. / 3 * (1 + nu) * coefficient * materials.surface_tension);
     }())
     , timer(timer)

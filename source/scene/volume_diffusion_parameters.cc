@@ -80,13 +80,20 @@ namespace levelsinter
                         "paper, an O(lambda) error).");
       prm.declare_entry("Pressure gradient",
                         "nodal",
-                        Patterns::Selection("nodal|recovered"),
+                        Patterns::Selection("nodal|recovered|flux"),
                         "grad p at the nodes where xi is read: nodal (the "
                         "cells' gradients at the vertex, averaged) or "
                         "recovered (a lumped L2 projection over the solid "
                         "part of the cells, with cut-cell quadrature: it "
                         "reads no atmosphere). doc/numerics.md, \"Volume "
-                        "diffusion: a recovered gradient\".");
+                        "diffusion: a recovered gradient\". Or flux: xi "
+                        "read on the interface itself as the boundary flux "
+                        "of the solid's harmonic pressure (Green's formula "
+                        "with cut-cell quadrature), without the interior "
+                        "offset (Interior offset and Extrapolation are not "
+                        "read); for Viscous flow/Pressure space = solid. "
+                        "doc/numerics.md, \"Volume diffusion: xi as the "
+                        "boundary flux\".");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -137,6 +144,7 @@ namespace levelsinter
     interior_offset  = prm.get_double("Interior offset");
     linear_extrapolation = prm.get("Extrapolation") == "linear";
     recovered_gradient   = prm.get("Pressure gradient") == "recovered";
+    boundary_flux        = prm.get("Pressure gradient") == "flux";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");

@@ -73,6 +73,12 @@ namespace levelsinter
       // atmosphere and allows interior_offset = 0 (every solid node a
       // source).
       bool         recovered_gradient = false;
+      // xi read on the interface itself as the pressure's boundary flux
+      // (add_boundary_flux(), Green's formula for a harmonic p) at the
+      // nodes with interface support, carried along N outwards and along
+      // -N inwards; interior_offset, linear_extrapolation and
+      // recovered_gradient are then not read.
+      bool         boundary_flux = false;
       // Normals from the distance filter^-1(alpha) (second order in h).
       bool         normals_from_distance = true;
       double       solver_tolerance      = 1e-10;
@@ -158,8 +164,37 @@ namespace levelsinter
                    Vector                        &values,
                    Vector                        &slopes) const;
 
+    // boundary_flux: the source nodes are those whose shape function has
+    // enough interface support; g = xi_i there (add_boundary_flux()).
     void
-    assemble(const LevelSetField<dim> &level_set, const Vector &is_source);
+    compute_flux_sources(const LevelSetField<dim> &level_set,
+                         const DoFHandler<dim>    &field_dofs,
+                         const unsigned int        component,
+                         const Vector             &field,
+                         Vector                   &is_source,
+                         Vector                   &values) const;
+
+    // Rows of the nodes with @p fixed > 0 keep the data (Dirichlet).
+    void
+    assemble(const LevelSetField<dim> &level_set, const Vector &fixed);
+
+    // Assemble with the current normals and carry each of @p data along
+    // them; returns the GMRES iterations.
+    unsigned int
+    carry(const LevelSetField<dim>           &level_set,
+          const Vector                       &fixed,
+          const std::vector<const Vector *>  &data,
+          std::vector<Vector>                &solutions);
+
+    // boundary_flux: carry the interface values outwards along N to the
+    // nodes with d >= 0 and inwards along -N to those with d < 0; xi and
+    // the reach of each node from the side it lies on.
+    unsigned int
+    carry_both_ways(const LevelSetField<dim> &level_set,
+                    const Vector             &is_source,
+                    const Vector             &values,
+                    Vector                   &owned_xi,
+                    Vector                   &reach);
 
     const LevelSetFilter              filter;
     const Settings                    settings;

@@ -2,15 +2,51 @@
 
 #include <deal.II/dofs/dof_handler.h>
 
+#include <deal.II/fe/fe_values.h>
+
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <levelsinter/level_set/level_set_field.h>
 
 #include <array>
+#include <vector>
 
 namespace levelsinter
 {
   using namespace dealii;
+
+  /**
+   * grad p of a scalar finite-element field p at the quadrature points of
+   * the solid part of a level-set cell: p at the cell's nodes,
+   * differentiated with the level set's Q1 shape functions (exact, since p
+   * is Q1 on each cell). p is component @p component of @p field on
+   * @p field_dofs, a DoFHandler on the level set's mesh; all three must
+   * outlive this object.
+   */
+  template <int dim>
+  class SolidPressureGradient
+  {
+  public:
+    SolidPressureGradient(const LevelSetField<dim>            &level_set,
+                          const DoFHandler<dim>               &field_dofs,
+                          const unsigned int                   component,
+                          const TrilinosWrappers::MPI::Vector &field);
+
+    /** grad p at each point of @p solid (with update_gradients) on the
+     * level-set cell @p cell. */
+    const std::vector<Tensor<1, dim>> &
+    evaluate(const typename DoFHandler<dim>::active_cell_iterator &cell,
+             const FEValues<dim>                                  &solid);
+
+  private:
+    const DoFHandler<dim>               &field_dofs;
+    const TrilinosWrappers::MPI::Vector &field;
+    const Quadrature<dim>                vertices;
+    FEValues<dim>                        field_values;
+    const FEValuesExtractors::Scalar     pressure;
+    std::vector<double>                  nodal;
+    std::vector<Tensor<1, dim>>          gradients;
+  };
 
   /**
    * The gradient of a scalar finite-element field p recovered on the level

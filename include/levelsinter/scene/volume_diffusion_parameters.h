@@ -51,6 +51,7 @@ namespace levelsinter
     double       interior_offset  = 6;         // lambda in cells (Eq. 110)
     bool         linear_extrapolation = true;  // or constant (Eq. 111)
     bool         recovered_gradient   = false; // grad p over the solid part
+    bool         boundary_flux        = false; // xi from Green's formula
     double       solver_tolerance = 1e-10;
     unsigned int max_iterations   = 1000;
     // Fraction of the measured explicit stability limit of v = -C_v xi N

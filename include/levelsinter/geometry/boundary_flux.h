@@ -1,0 +1,51 @@
+#pragma once
+
+#include <deal.II/dofs/dof_handler.h>
+
+#include <deal.II/lac/trilinos_vector.h>
+
+#include <levelsinter/level_set/level_set_field.h>
+
+namespace levelsinter
+{
+  using namespace dealii;
+
+  /**
+   * The normal flux xi = grad p . n of a harmonic field p on the interface
+   * {alpha_h = 0}, n pointing out of the solid, extracted variationally
+   * (Green's formula; Babuska & Miller's flux extraction): for Laplace p = 0
+   * in the solid S and every test function w,
+   *
+   *   int_Gamma xi w ds = int_S grad p . grad w dx,
+   *
+   * so for a test function w that is a sum of the level set's Q1 shape
+   * functions phi_j, with the interface mass lumped,
+   *
+   *   xi_w = sum_j int_S grad p_h . grad phi_j dx / sum_j int_Gamma phi_j ds
+   *
+   * (NormalGradientExtension sums over the nodes of the cells at a node).
+   *
+   * Both integrals use the sharp cut-cell quadrature (deal.II NonMatching)
+   * in the scene's measure (r dr dz in an axisymmetric scene, where Green's
+   * formula holds for the axisymmetric Laplacian). The volume integral
+   * reads p only in the solid and averages grad p_h over w's support
+   * instead of reading it at one point: no interior offset, no atmosphere
+   * (doc/numerics.md, "Volume diffusion: xi as the boundary flux").
+   *
+   * Accumulated here per node j as the two integrals: @p surface_mass gets
+   * int_Gamma phi_j ds and @p flux gets int_S grad p . grad phi_j over the
+   * locally owned cells (ghosted vectors with writable ghosts; the caller
+   * compresses with VectorOperation::add and divides where the surface
+   * mass is large enough for the quotient to be meaningful). p is
+   * component @p component of @p field on @p field_dofs, a DoFHandler on
+   * the level set's mesh whose component is Q1 on each cell.
+   */
+  template <int dim>
+  void
+  add_boundary_flux(const LevelSetField<dim>            &level_set,
+                    const DoFHandler<dim>               &field_dofs,
+                    const unsigned int                   component,
+                    const TrilinosWrappers::MPI::Vector &field,
+                    TrilinosWrappers::MPI::Vector       &surface_mass,
+                    TrilinosWrappers::MPI::Vector       &flux);
+} // namespace levelsinter

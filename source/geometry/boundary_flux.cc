@@ -1,0 +1,68 @@
+#include <deal.II/fe/fe_values.h>
+
+#include <levelsinter/geometry/boundary_flux.h>
+#include <levelsinter/geometry/recovered_gradient.h>
+#include <levelsinter/level_set/interface_measures.h>
+
+#include <vector>
+
+namespace levelsinter
+{
+  template <int dim>
+  void
+  add_boundary_flux(const LevelSetField<dim>            &level_set,
+                    const DoFHandler<dim>               &field_dofs,
+                    const unsigned int                   component,
+                    const TrilinosWrappers::MPI::Vector &field,
+                    TrilinosWrappers::MPI::Vector       &surface_mass,
+                    TrilinosWrappers::MPI::Vector       &flux)
+  {
+    SolidPressureGradient<dim> pressure_gradient(level_set,
+                                                 field_dofs,
+                                                 component,
+                                                 field);
+    std::vector<types::global_dof_index> indices(level_set.fe().dofs_per_cell);
+    const SceneMeasure                  &measure = level_set.measure();
+
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.solid_flags   = update_gradients | update_JxW_values;
+    integrands.surface_flags = update_values | update_JxW_values;
+    integrands.on_solid = [&](const auto &cell, const FEValues<dim> &solid) {
+      const auto &gradients = pressure_gradient.evaluate(cell, solid);
+      cell->get_dof_indices(indices);
+      for (unsigned int q = 0; q < solid.n_quadrature_points; ++q)
+        {
+          const double JxW = measure.JxW(solid, q);
+          for (unsigned int i = 0; i < indices.size(); ++i)
+            flux(indices[i]) += gradients[q] * solid.shape_grad(i, q) * JxW;
+        }
+    };
+    integrands.on_surface =
+      [&](const auto &cell, const NonMatching::FEImmersedSurfaceValues<dim>
+                              &surface) {
+        cell->get_dof_indices(indices);
+        for (unsigned int q = 0; q < surface.n_quadrature_points; ++q)
+          {
+            const double JxW = measure.JxW(surface, q);
+            for (unsigned int i = 0; i < indices.size(); ++i)
+              surface_mass(indices[i]) += surface.shape_value(i, q) * JxW;
+          }
+      };
+    interface_measures::integrate_regions(level_set, integrands);
+  }
+
+  template void
+  add_boundary_flux<2>(const LevelSetField<2> &,
+                       const DoFHandler<2> &,
+                       const unsigned int,
+                       const TrilinosWrappers::MPI::Vector &,
+                       TrilinosWrappers::MPI::Vector &,
+                       TrilinosWrappers::MPI::Vector &);
+  template void
+  add_boundary_flux<3>(const LevelSetField<3> &,
+                       const DoFHandler<3> &,
+                       const unsigned int,
+                       const TrilinosWrappers::MPI::Vector &,
+                       TrilinosWrappers::MPI::Vector &,
+                       TrilinosWrappers::MPI::Vector &);
+} // namespace levelsinter
