@@ -461,17 +461,16 @@ grains_check(grains_ring_2d_R8_spacing grains_ring_2d_R8 spacing
 # solid's power-cell centroids, the packing analysis) to t = 0.04: it
 # stays at least 30 % above the equilibrium's (measured +48.8 % at R/h =
 # 16). Plot grains_ring_2d.png of the spacings.
-foreach(case "4;0.094;0.062;16" "5;0.047;0.031;32")
-  list(GET case 0 level)
-  list(GET case 1 filter)
-  list(GET case 2 band)
-  list(GET case 3 resolution)
+# (The scene is at R/h = 32; GRAINS_AXISYMMETRIC_R16 holds the settings
+# of R/h = 16.)
+foreach(resolution 16 32)
   set(name study_grains_ring_2d_R${resolution})
+  set(settings)
+  if(resolution EQUAL 16)
+    set(settings ${GRAINS_AXISYMMETRIC_R16})
+  endif()
   add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
-    --set "Output/Field formats=none"
-    --set "Mesh refinement/Maximum level=${level}"
-    --set "Level set/Filter thickness=${filter}"
-    --set "Mesh refinement/Band width=${band}"
+    --set "Output/Field formats=none" ${settings}
     --set "Time/End time=0.02" --set "Output/Directory=${name}"
     ${GRAIN_SCENES}/grains_ring_2d.prm)
   add_test(NAME ${name} COMMAND ${CHECK_GRAINS} equilibrium ${name} 1 2
@@ -488,7 +487,7 @@ foreach(case "4;0.094;0.062;16" "5;0.047;0.031;32")
 endforeach()
 set(name study_grains_ring_2d_surface_only_R16)
 add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
-  --set "Output/Field formats=none" ${GRAINS_AXISYMMETRIC_R16} # R/h = 16
+  --set "Output/Field formats=none" ${GRAINS_AXISYMMETRIC_R16}
   --set "Time/End time=0.04" --set "Grain boundaries/Enabled=false"
   --set "Output/Directory=${name}" ${GRAIN_SCENES}/grains_ring_2d.prm)
 add_test(NAME ${name} COMMAND ${CHECK_GRAINS} spacing ${name} 1 12 0.48775
