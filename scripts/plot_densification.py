@@ -7,7 +7,9 @@ usage: plot_densification.py RUN_DIRECTORY OUT.png --csv OUT.csv [LABEL=RUN ...]
 Reads RUN_DIRECTORY/metrics.csv (a scene with `Grain boundaries`), writes
 OUT.csv with the columns time, grain_relative_density (where the grain
 centres span a box), shrinkage_x/_y/_z (those present),
-grain_boundary_radius_mean, grain_volume_change_max and volume_change, and
+grain_boundary_radius_mean, grain_volume_change_max, volume_change,
+grain_boundaries and the packing analysis' relative_density,
+open_porosity, closed_porosity and closed_pores (where present), and
 OUT.png: the relative density, the shrinkage and the volume per grain
 (grain_volume_change_max, the largest |V_i / V_i(0) - 1|, with the
 solid's |volume_change|) against time. Further LABEL=RUN pairs add those
@@ -42,7 +44,10 @@ rows = read(run)
 columns = ["time"] + [c for c in ("grain_relative_density", "shrinkage_x",
                                   "shrinkage_y", "shrinkage_z",
                                   "grain_boundary_radius_mean",
-                                  "grain_volume_change_max", "volume_change")
+                                  "grain_volume_change_max", "volume_change",
+                                  "grain_boundaries", "relative_density",
+                                  "open_porosity", "closed_porosity",
+                                  "closed_pores")
                       if c in rows[0]]
 validation_data.refuse_shorter(out_csv, rows)
 with open(out_csv, "w", newline="") as f:
