@@ -20,7 +20,7 @@ if len(sys.argv) < 3:
     sys.exit(__doc__)
 fig, ax = plt.subplots(figsize=(6, 4))
 for item in sys.argv[2:]:
-    label, path = item.split("=", 1)
+    label, path = item.rsplit("=", 1)
     with open(path) as f:
         rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
     ax.plot([r["time"] for r in rows],

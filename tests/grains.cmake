@@ -525,9 +525,9 @@ set(spacing ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_ring_2d)
 add_test(NAME study_grains_ring_2d_plot
   COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_grain_row.py
     ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_ring_2d.png
-    "R/h = 16=${spacing}_R16_spacing.csv"
-    "R/h = 32=${spacing}_R32_spacing.csv"
-    "surface diffusion alone, R/h = 16=${spacing}_surface_only_R16_spacing.csv")
+    "rigid grains, R/h = 16=${spacing}_R16_spacing.csv"
+    "rigid grains, R/h = 32=${spacing}_R32_spacing.csv"
+    "surface diffusion alone (centroids), R/h = 16=${spacing}_surface_only_R16_spacing.csv")
 set_tests_properties(study_grains_ring_2d_plot PROPERTIES FIXTURES_REQUIRED
   "study_grains_ring_2d_R16_checked;study_grains_ring_2d_R32_checked;study_grains_ring_2d_surface_only_R16_checked"
   LABELS validation-long)
