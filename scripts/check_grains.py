@@ -34,7 +34,7 @@ if a check fails.
   check_grains.py same RUN_A RUN_B COLUMN RELATIVE_TOLERANCE
       COLUMN of RUN_A/metrics.csv and RUN_B/metrics.csv agree at the rows of
       equal time, relative to the largest |value| of RUN_A.
-  check_grains.py equilibrium RUN RATIO BODY_DIM [--share S] [--csv OUT.csv]
+  check_grains.py equilibrium RUN RATIO BODY_DIM [--share S] [--row N] [--csv OUT.csv]
       two equal grains at their end state against the exact equilibrium
       of the same solid volume (doc/numerics.md, "The dihedral angle at the
       triple line"): two truncated discs (BODY_DIM 2) or spheres (3)
@@ -43,17 +43,28 @@ if a check fails.
       circles' centre distance and the dihedral angle, measured and exact;
       with --csv the table over the run; --share S: the domain holds the
       share S of the pair (a quarter box: 0.25), its solid volume is S
-      times the pair's.
+      times the pair's; --row N: the run is a closed row of N equal grains
+      (2D, every grain cut by its two grain boundaries; grains_ring_2d.prm),
+      every grain boundary against the exact state of the row.
+  check_grains.py spacing RUN RATIO N D0 COLUMN LOW HIGH [--csv OUT.csv]
+      a closed row of N equal grains (grains_ring_2d.prm) with the centre
+      spacing D0 at t = 0: the spacing D0 (1 + COLUMN) of RUN/metrics.csv
+      at the last row against the exact equilibrium's (`equilibrium
+      --row N`), d / d_exact - 1 within [LOW, HIGH]. COLUMN:
+      grain_centre_distance_change_mean (the rigid grains) or
+      centre_distance_change_mean (the packing analysis' power-cell
+      centroids, also without grain boundaries); --csv: the spacing over
+      the run.
   check_grains.py conserved RUN TOLERANCE
       every grain keeps its share of the solid: at every row of
       metrics.csv grain_volume_change_max exceeds |volume_change| (each
       grain's volume may follow the solid's) by at most TOLERANCE.
-  check_grains.py settled RUN RATIO BODY_DIM T_FROM TOLERANCE TOLERANCE_DEGREES [SHARE]
+  check_grains.py settled RUN RATIO BODY_DIM T_FROM TOLERANCE TOLERANCE_DEGREES [SHARE] [--row N]
       the pair of `equilibrium` at every row with time >= T_FROM: R, a
       and d within the relative TOLERANCE of the exact end state, psi's
       mean over those rows within TOLERANCE_DEGREES; prints the largest
-      errors, psi's range and the rigid grains' drift. SHARE: as
-      `equilibrium`'s --share.
+      errors, psi's range and the rigid grains' drift. SHARE, --row: as
+      `equilibrium`'s --share, --row.
   check_grains.py settling OUT.csv T_FROM LABEL RUN RATIO BODY_DIM EVERY ...
       per run (every EVERY-th row at time >= T_FROM): the largest errors
       of `settled`, psi's range and mean, the rigid grains' mean approach
@@ -64,10 +75,10 @@ if a check fails.
       >= T_FROM (the triple line relaxed) within TOLERANCE_DEGREES of psi,
       cos(psi/2) = RATIO / 2; prints the range measured.
   check_grains.py initial RUN R TOLERANCE_DEGREES RELATIVE_TOLERANCE
-      step 0 of grain_boundaries.csv (two overlapping circles of radius
-      R): the dihedral angle where the circles meet, cos(psi/2) = d / (2
-      R), within TOLERANCE_DEGREES, the fitted radius and centre distance
-      within RELATIVE_TOLERANCE of R and d.
+      step 0 of grain_boundaries.csv (overlapping circles of radius R),
+      every grain boundary: the dihedral angle where the circles meet,
+      cos(psi/2) = d / (2 R), within TOLERANCE_DEGREES, the fitted radius
+      and centre distance within RELATIVE_TOLERANCE of R and d.
 """
 import csv
 import math
@@ -203,12 +214,20 @@ def kinetics(run, radius, c_gb, t_fit, out):
         writer.writerows([[f"{v:.6g}" for v in row] for row in table])
 
 
-def exact_equilibrium(volume, ratio, body):
+def exact_equilibrium(volume, ratio, body, grains=0):
     """(R, a, d, psi in degrees) of two equal grains of total volume
-    `volume` (area in 2D) meeting at psi, cos(psi/2) = ratio / 2."""
+    `volume` (area in 2D) meeting at psi, cos(psi/2) = ratio / 2; grains > 0:
+    of a closed row of `grains` equal grains (2D) of total area `volume`."""
     c = ratio / 2
     beta = math.acos(c)
-    if body == 2:
+    if grains > 0:
+        # Each grain: a disc of radius R less the two segments beyond its
+        # grain boundaries at R cos(beta) from its centre (doc/numerics.md,
+        # "The periodic row of grains"): area R^2 (pi - psi + sin(psi)).
+        if body != 2:
+            fail("a closed row is a 2D scene")
+        radius = math.sqrt(volume / grains / (math.pi - 2 * beta + 2 * math.sin(beta) * c))
+    elif body == 2:
         # Each grain: a disc of radius R less the segment beyond the chord
         # at R cos(beta): area R^2 (pi - beta + sin(beta) cos(beta)).
         radius = math.sqrt(volume / 2 / (math.pi - beta + math.sin(beta) * c))
@@ -219,10 +238,11 @@ def exact_equilibrium(volume, ratio, body):
     return radius, radius * math.sin(beta), 2 * radius * c, 2 * math.degrees(beta)
 
 
-def equilibrium_table(run, ratio, body, share=1):
+def equilibrium_table(run, ratio, body, share=1, grains=0):
     """Per row of RUN/grain_boundaries.csv with a metrics row: step, time,
     measured R, a, d, psi and their exact values at the row's volume (the
-    domain holding the share `share` of the pair)."""
+    domain holding the share `share` of the pair, or a closed row of `grains`
+    grains)."""
     metrics = rows(run + "/metrics.csv")
     pairs = rows(run + "/grain_boundaries.csv")
     volume = {row["step"]: row["solid_volume"] / share for row in metrics}
@@ -230,15 +250,15 @@ def equilibrium_table(run, ratio, body, share=1):
     for row in pairs:
         if row["step"] not in volume:
             continue
-        exact = exact_equilibrium(volume[row["step"]], ratio, body)
+        exact = exact_equilibrium(volume[row["step"]], ratio, body, grains)
         measured = (row["fitted_radius"], row["radius"],
                     row["fitted_centre_distance"], row["dihedral_angle"])
         table.append((row["step"], row["time"]) + measured + exact)
     return table
 
 
-def equilibrium(run, ratio, body, out, share=1):
-    table = equilibrium_table(run, ratio, body, share)
+def equilibrium(run, ratio, body, out, share=1, grains=0):
+    table = equilibrium_table(run, ratio, body, share, grains)
     last = table[-1]
     names = ("radius R", "grain-boundary radius a", "centre distance d",
              "dihedral angle psi (degrees)")
@@ -257,13 +277,14 @@ def equilibrium(run, ratio, body, out, share=1):
                 f.write(",".join("%.8g" % v for v in r) + "\n")
 
 
-def settling(run, ratio, body, t_from, every=1, share=1):
+def settling(run, ratio, body, t_from, every=1, share=1, grains=0):
     """Over the rows with time >= t_from (every `every`-th row): their
     number, the largest relative errors of R, a, d, psi's least, largest
     and mean, its exact value, the rigid grains' approach rate (mean) and
     their centre distance's relative change over those rows (the domain
-    holding the share `share` of the pair)."""
-    table = [r for r in equilibrium_table(run, ratio, body, share)
+    holding the share `share` of the pair, or a closed row of `grains`
+    grains)."""
+    table = [r for r in equilibrium_table(run, ratio, body, share, grains)
              if r[1] >= t_from]
     if not table:
         fail("no row at t >= %g" % t_from)
@@ -296,9 +317,10 @@ def settling_table(out, t_from, cases):
             print(label, " ".join("%.4g" % v for v in values))
 
 
-def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1):
+def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1,
+            grains=0):
     n, *largest, low, high, mean, exact, rate, drift, _ = settling(
-        run, ratio, body, t_from, share=share)
+        run, ratio, body, t_from, share=share, grains=grains)
     # psi's mean: a single row's reading (circles fitted near the line)
     # scatters by 10-40 degrees on these meshes (doc/validation.md).
     off = abs(mean - exact)
@@ -328,19 +350,43 @@ def angle(run, ratio, t_from, tolerance_degrees):
 
 
 def initial(run, radius, tolerance_degrees, tolerance):
-    row = rows(run + "/grain_boundaries.csv")[0]
-    d = row["centre_distance"]
-    psi = 2 * math.degrees(math.acos(d / 2 / radius))
-    print("step 0: dihedral angle %.4g (exact %.4g), fitted radius %.6g "
-          "(%.6g), fitted centre distance %.6g (%.6g)" %
-          (row["dihedral_angle"], psi, row["fitted_radius"], radius,
-           row["fitted_centre_distance"], d))
-    if not abs(row["dihedral_angle"] - psi) <= tolerance_degrees:
-        fail("dihedral angle off by more than %g degrees" % tolerance_degrees)
-    if not abs(row["fitted_radius"] - radius) <= tolerance * radius:
-        fail("fitted radius off by more than %g" % tolerance)
-    if not abs(row["fitted_centre_distance"] - d) <= tolerance * d:
-        fail("fitted centre distance off by more than %g" % tolerance)
+    table = [row for row in rows(run + "/grain_boundaries.csv")
+             if row["step"] == 0]
+    for row in table:
+        d = row["centre_distance"]
+        psi = 2 * math.degrees(math.acos(d / 2 / radius))
+        print("step 0, grains %d-%d: dihedral angle %.4g (exact %.4g), fitted "
+              "radius %.6g (%.6g), fitted centre distance %.6g (%.6g)" %
+              (row["grain_i"], row["grain_j"], row["dihedral_angle"], psi,
+               row["fitted_radius"], radius, row["fitted_centre_distance"], d))
+        if not abs(row["dihedral_angle"] - psi) <= tolerance_degrees:
+            fail("dihedral angle off by more than %g degrees" % tolerance_degrees)
+        if not abs(row["fitted_radius"] - radius) <= tolerance * radius:
+            fail("fitted radius off by more than %g" % tolerance)
+        if not abs(row["fitted_centre_distance"] - d) <= tolerance * d:
+            fail("fitted centre distance off by more than %g" % tolerance)
+
+
+def spacing(run, ratio, grains, d0, column, low, high, out=None):
+    """The closed row's centre spacing d = d0 (1 + COLUMN) against the
+    exact equilibrium's d at each metrics row (the row's solid area)."""
+    table = []
+    for row in rows(run + "/metrics.csv"):
+        if math.isnan(row[column]):
+            continue  # the packing analysis' rows only
+        exact = exact_equilibrium(row["solid_volume"], ratio, 2, grains)[2]
+        table.append((row["time"], d0 * (1 + row[column]), exact))
+    t, d, exact = table[-1]
+    error = d / exact - 1
+    print("t = %g: centre spacing (%s) %.5g, at t = 0 %.5g, exact equilibrium "
+          "%.5g: d / d_exact - 1 = %+.4f" % (t, column, d, d0, exact, error))
+    if out:
+        with open(out, "w") as f:
+            f.write("time,centre_spacing,exact_centre_spacing\n")
+            for r in table:
+                f.write(",".join("%.8g" % v for v in r) + "\n")
+    if not low <= error <= high:
+        fail("d / d_exact - 1 outside [%g, %g]" % (low, high))
 
 
 def run_distance(run):
@@ -351,6 +397,12 @@ def run_distance(run):
 
 if __name__ == "__main__":
     mode, args = sys.argv[1], sys.argv[2:]
+    # --row N (equilibrium, settled): a closed row of N grains.
+    grains = 0
+    if "--row" in args:
+        k = args.index("--row")
+        grains = int(args[k + 1])
+        del args[k:k + 2]
     if mode == "law":
         law(args[0], float(args[1]), float(args[2]), int(args[3]), float(args[4]))
     elif mode == "densify":
@@ -364,17 +416,22 @@ if __name__ == "__main__":
     elif mode == "equilibrium":
         options = dict(zip(args[3::2], args[4::2]))
         equilibrium(args[0], float(args[1]), int(args[2]), options.get("--csv"),
-                    float(options.get("--share", 1)))
+                    float(options.get("--share", 1)), grains)
     elif mode == "conserved":
         conserved(args[0], float(args[1]))
     elif mode == "settling":
         settling_table(args[0], float(args[1]), args[2:])
     elif mode == "settled":
-        settled(args[0], float(args[1]), int(args[2]), *map(float, args[3:7]))
+        settled(args[0], float(args[1]), int(args[2]), *map(float, args[3:7]),
+                grains=grains)
     elif mode == "angle":
         angle(args[0], *map(float, args[1:4]))
     elif mode == "initial":
         initial(args[0], *map(float, args[1:4]))
+    elif mode == "spacing":
+        options = dict(zip(args[7::2], args[8::2]))
+        spacing(args[0], float(args[1]), int(args[2]), float(args[3]), args[4],
+                float(args[5]), float(args[6]), options.get("--csv"))
     elif mode == "same":
         same(args[0], args[1], args[2], float(args[3]))
     else:

@@ -162,11 +162,30 @@ namespace levelsinter
     // (the triple-line kernel has the half-width l, doc/numerics.md), near
     // the triple line (to 1.5 l + R / 4: the dihedral angle where the
     // circle meets the plane) and on the whole grain (radius and centre).
+    // A grain with more grain boundaries (a row, a packing) leaves out the
+    // same 1.5 l about its other boundaries: their grooves are not on the
+    // circle, and in a row of squat grains (gamma_gb = gamma_s: centre
+    // spacing R) they would take a third of each fit.
     const auto boundaries = grain_geometry::find_grain_boundaries(alpha, cells);
     const unsigned int  nb = boundaries.size();
     const bool revolution = alpha.measure().template body_dimension<dim>() == 3;
     std::vector<double> moments(nb * 8 * n_moments, 0.);
     const double        inner = 1.5 * grains.kernel_width();
+    const auto          near_other = [&](const unsigned int  b,
+                                const unsigned int  grain,
+                                const Point<dim>   &x) {
+      for (unsigned int o = 0; o < nb; ++o)
+        if (o != b && (boundaries[o].i == grain || boundaries[o].j == grain))
+          {
+            const Tensor<1, dim> offset = x - boundaries[o].origin;
+            const double         zeta   = offset * boundaries[o].normal;
+            if (std::abs(zeta) < inner &&
+                (offset - zeta * boundaries[o].normal).norm() <
+                  boundaries[o].radius + inner)
+              return true;
+          }
+      return false;
+    };
     const auto          fit    = [&](const unsigned int b,
                            const unsigned int whole,
                            const unsigned int side,
@@ -203,7 +222,8 @@ namespace levelsinter
               const unsigned int   side   = zeta > 0 ? 1 : 0;
               const unsigned int   owner  = cells.owner(x, near);
               if (std::abs(zeta) < inner ||
-                  owner != (side == 1 ? boundary.j : boundary.i))
+                  owner != (side == 1 ? boundary.j : boundary.i) ||
+                  near_other(b, owner, x))
                 continue;
               const Tensor<1, dim> radial = offset - zeta * boundary.normal;
               unsigned int         end    = 0;
