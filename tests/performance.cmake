@@ -138,6 +138,9 @@ set_tests_properties(benchmark_scene_times PROPERTIES LABELS benchmark)
 # holds 1 x 4 + 1 cells at 0.048) and CFL 2 with `Elastic solve interval =
 # 2`: 24 and 39 steps (those runs, like the first three, with the elastic
 # solver tolerance 1e-6 the scene had then).
+# The scene's elastic problem moved to the solid space with the recovered
+# xi on 28 Nov 2026 (doc/performance.md, "Session 23"); this study keeps
+# the space and xi it was measured with, so that its table stays true.
 # packing_convergence_test(NAME SCENE BOX CELLS PARTICLES END TIMES
 #   ARGS...): scripts/packing_convergence.py on SCENE with PARTICLES in
 #   [0, BOX]^3 (CELLS coarse cells per axis) to END, compared at TIMES, its
@@ -164,7 +167,9 @@ packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
   --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
   --case "cfl1:Time/CFL number=1"
   --case "reference"
-  --reference reference)
+  --reference reference
+  --set "Viscous flow/Pressure space=continuous"
+  --set "Volume diffusion/Pressure gradient=nodal")
 
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
