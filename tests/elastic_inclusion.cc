@@ -206,6 +206,7 @@ namespace
           for (unsigned int step = 1; step <= n_steps; ++step)
             {
               Timer wall(MPI_COMM_WORLD, true);
+              stokes.fit_to(alpha);
               stokes.assemble(alpha,
                               TrilinosWrappers::MPI::Vector(),
                               TrilinosWrappers::MPI::Vector(),

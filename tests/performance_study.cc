@@ -39,7 +39,9 @@ namespace
       "normal gradient: assembly",
       "normal gradient: solve"}},
     {"elastic",
-     {"volume diffusion: elastic assembly", "volume diffusion: elastic solve"}},
+     {"volume diffusion: elastic set-up",
+      "volume diffusion: elastic assembly",
+      "volume diffusion: elastic solve"}},
     {"adaptation", {"mesh adaptation", "system setup after adaptation"}},
     {"metrics", {"metrics"}}, // holds the packing analysis
     {"packing_analysis", {"packing analysis"}},

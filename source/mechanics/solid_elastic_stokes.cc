@@ -262,16 +262,24 @@ namespace levelsinter
 
   template <int dim>
   void
+  SolidElasticStokes<dim>::fit_to(const LevelSetField<dim> &alpha)
+  {
+    classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
+      alpha.dof_handler(), alpha.alpha());
+    classifier->reclassify();
+    if (update_solid_cells(*classifier))
+      setup_solid_system();
+  }
+
+  template <int dim>
+  void
   SolidElasticStokes<dim>::assemble(const LevelSetField<dim> &alpha,
                                     const TrilinosWrappers::MPI::Vector &,
                                     const TrilinosWrappers::MPI::Vector &,
                                     const double surface_time_step)
   {
-    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
-                                                alpha.alpha());
-    classifier.reclassify();
-    if (update_solid_cells(classifier))
-      setup_solid_system();
+    Assert(classifier && solid_dofs_current,
+           ExcMessage("assemble() needs fit_to() on the same level set"));
     // u^{n-1} on the solid's DoFs, for the history terms.
     copy_on_solid_cells(
       dofs, old_displacement, solid_dofs, constraints, solid_displacement);
@@ -311,15 +319,14 @@ namespace levelsinter
                                 schur_matrix);
         }
     if (ghost_penalty > 0)
-      assemble_ghost_penalty(alpha, classifier);
+      assemble_ghost_penalty(alpha);
     compress_system(system_matrix, system_rhs, schur_matrix);
   }
 
   template <int dim>
   void
   SolidElasticStokes<dim>::assemble_ghost_penalty(
-    const LevelSetField<dim>               &alpha,
-    const NonMatching::MeshClassifier<dim> &classifier)
+    const LevelSetField<dim> &alpha)
   {
     const GhostPenaltyAssembler<dim> penalty(ghost_penalty);
     FEInterfaceValues<dim> values = penalty_face_values(finite_element);
@@ -335,8 +342,9 @@ namespace levelsinter
                               const bool         coarser) {
       if (cell->active_fe_index() != with_solid ||
           neighbor->active_fe_index() != with_solid ||
-          (classifier.location_to_level_set(cell) != Location::intersected &&
-           classifier.location_to_level_set(neighbor) !=
+          (classifier->location_to_level_set(cell) !=
+             Location::intersected &&
+           classifier->location_to_level_set(neighbor) !=
              Location::intersected))
         return;
       reinit_penalty_face(values, cell, f, neighbor, coarser);

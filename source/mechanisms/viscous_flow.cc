@@ -173,6 +173,7 @@ namespace levelsinter
     phases->set_time_step(dt);
     {
       TimerOutput::Scope scope(timer, "viscous flow: assembly");
+      operator_->fit_to(alpha);
       operator_->assemble(alpha,
                           kappa,
                           interface_level_set,

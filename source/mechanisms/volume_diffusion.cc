@@ -202,6 +202,10 @@ namespace levelsinter
   {
     phases->set_time_step(step_seconds);
     {
+      TimerOutput::Scope scope(timer, "volume diffusion: elastic set-up");
+      operator_->fit_to(alpha);
+    }
+    {
       TimerOutput::Scope scope(timer, "volume diffusion: elastic assembly");
       operator_->assemble(alpha,
                           TrilinosWrappers::MPI::Vector(),

@@ -20,6 +20,7 @@
 #include <levelsinter/mechanics/two_phase_stokes.h>
 #include <levelsinter/mechanics/velocity_pressure_operator.h>
 
+#include <memory>
 #include <vector>
 
 namespace levelsinter
@@ -79,6 +80,12 @@ namespace levelsinter
      * numbered by the next assemble(), which knows the level set. */
     void
     setup_dofs() override;
+
+    /** Classify the cells on @p alpha; where the set of cells with solid
+     * changed (or the mesh), number the solid DoFs and build the
+     * patterns again. */
+    void
+    fit_to(const LevelSetField<dim> &alpha) override;
 
     /** The curvature and @p interface_level_set are not read. */
     void
@@ -144,8 +151,7 @@ namespace levelsinter
     setup_solid_system();
 
     void
-    assemble_ghost_penalty(const LevelSetField<dim>               &alpha,
-                           const NonMatching::MeshClassifier<dim> &classifier);
+    assemble_ghost_penalty(const LevelSetField<dim> &alpha);
 
     /** Copy @p from (ghosted, on @p from_dofs) to the owned entries of
      * @p to (on @p to_dofs) on the cells with solid; then @p to_constraints
@@ -175,6 +181,8 @@ namespace levelsinter
     // The solid.
     DoFHandler<dim>                     solid_dofs;
     bool                                solid_dofs_current = false;
+    // The cells' location on the level set of the last fit_to().
+    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
     std::vector<IndexSet>               owned_partitioning;
     std::vector<IndexSet>               relevant_partitioning;
     AffineConstraints<double>           constraints;

@@ -49,7 +49,16 @@ namespace levelsinter
     virtual void
     setup_dofs() = 0;
 
-    /** The system for the level set @p alpha (TwoPhaseStokes::assemble()). */
+    /** Fit the unknowns to the level set @p alpha, before assemble(): a
+     * space on part of the mesh (SolidElasticStokes) numbers its DoFs and
+     * builds its patterns here, timed apart from the assembly; a space on
+     * the whole mesh has nothing to do. */
+    virtual void
+    fit_to(const LevelSetField<dim> &)
+    {}
+
+    /** The system for the level set @p alpha (TwoPhaseStokes::assemble()),
+     * after fit_to(alpha). */
     virtual void
     assemble(const LevelSetField<dim>            &alpha,
              const TrilinosWrappers::MPI::Vector &curvature,
