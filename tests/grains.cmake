@@ -477,7 +477,7 @@ set_tests_properties(grains_ring_2d_fits_1_vs_2_ranks PROPERTIES
 # doc/validation.md "Settling the pair: the refined band"), from +52.6 % at
 # t = 0. With the band at 0.66 E (before the ninth increment) the grains
 # drifted apart: +8.5 % at t = 0.04. Limits +3 % and +7.5 %; surface
-# diffusion alone leaves the solid's centroids at +49 % at R/h = 16.
+# diffusion alone leaves the solid's centroids at +51.5 % at R/h = 16.
 grains_run(grains_ring_2d_R8 grains_ring_2d.prm 1000 ${GRAINS_R8}
   --set "Time/End time=0.04" --set "Output/Metrics interval=5")
 grains_check(grains_ring_2d_R8_spacing grains_ring_2d_R8 spacing
@@ -487,7 +487,7 @@ grains_check(grains_ring_2d_R8_spacing grains_ring_2d_R8 spacing
 # --row 12, and the rigid grains' spacing), and the row with surface
 # diffusion alone (Grain boundaries/Enabled = false; the spacing of the
 # solid's power-cell centroids, the packing analysis) to t = 0.04: it
-# stays at least 30 % above the equilibrium's (measured +48.8 % at R/h =
+# stays at least 30 % above the equilibrium's (measured +51.5 % at R/h =
 # 16). Plot grains_ring_2d.png of the spacings.
 # (The scene is at R/h = 32; GRAINS_R16 holds the settings
 # of R/h = 16.)
