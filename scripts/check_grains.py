@@ -70,6 +70,12 @@ if a check fails.
       of `settled`, psi's range and mean, the rigid grains' mean approach
       rate and their centre distance's change, the solid's volume_change
       at the last row; writes OUT.csv.
+  check_grains.py bias OUT.csv T_FROM T_TO LABEL RUN ...
+      per run, the means over the rows with T_FROM <= time <= T_TO of
+      what the contact law reads: the volume correction's speed, the
+      neck-root curvature kappa' and the explicit one against the fitted
+      circles' 1/R; the rigid approach rate's mean and the centre
+      distance's change; writes OUT.csv.
   check_grains.py angle RUN RATIO T_FROM TOLERANCE_DEGREES
       the dihedral angle of grain_boundaries.csv at every row with time
       >= T_FROM (the triple line relaxed) within TOLERANCE_DEGREES of psi,
@@ -317,6 +323,43 @@ def settling_table(out, t_from, cases):
             print(label, " ".join("%.4g" % v for v in values))
 
 
+def bias(out, t_from, t_to, cases):
+    """The contact law's inputs over t_from <= t <= t_to, per case (LABEL
+    RUN, two words each): the volume correction's speed, the neck-root
+    curvature the law reads (kappa'), the explicit one, the fitted
+    circles' 1/R (all means over the rows), the rigid approach rate's mean
+    and the rigid centre distance's relative change."""
+    with open(out, "w") as f:
+        f.write("case,run,t_from,t_to,rows,steps,volume_correction_speed_mean,"
+                "root_curvature_mean,root_curvature_explicit_mean,"
+                "inverse_fitted_radius_mean,root_bias,approach_rate_mean,"
+                "rigid_distance_change\n")
+        for k in range(0, len(cases), 2):
+            label, run = cases[k:k + 2]
+            speed = {row["step"]: row["volume_correction_speed"]
+                     for row in rows(run + "/metrics.csv")}
+            pairs = [row for row in rows(run + "/grain_boundaries.csv")
+                     if t_from <= row["time"] <= t_to and row["step"] in speed]
+            if not pairs:
+                fail("%s: no row in [%g, %g]" % (run, t_from, t_to))
+
+            def mean(values):
+                return sum(values) / len(values)
+            root = mean([r["root_curvature"] for r in pairs])
+            inverse = mean([1 / r["fitted_radius"] for r in pairs])
+            values = (len(pairs), pairs[-1]["step"],
+                      mean([speed[r["step"]] for r in pairs]), root,
+                      mean([r["root_curvature_explicit"] for r in pairs]),
+                      inverse, root / inverse - 1,
+                      mean([r["approach_rate"] for r in pairs]),
+                      pairs[-1]["centre_distance"] /
+                      pairs[0]["centre_distance"] - 1)
+            f.write("%s,%s,%g,%g," % (label, os.path.basename(run), t_from,
+                                      t_to) +
+                    ",".join("%.5g" % v for v in values) + "\n")
+            print(label, " ".join("%.4g" % v for v in values))
+
+
 def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1,
             grains=0):
     n, *largest, low, high, mean, exact, rate, drift, _ = settling(
@@ -421,6 +464,8 @@ if __name__ == "__main__":
         conserved(args[0], float(args[1]))
     elif mode == "settling":
         settling_table(args[0], float(args[1]), args[2:])
+    elif mode == "bias":
+        bias(args[0], float(args[1]), float(args[2]), args[3:])
     elif mode == "settled":
         settled(args[0], float(args[1]), int(args[2]), *map(float, args[3:7]),
                 grains=grains)

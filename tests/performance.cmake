@@ -171,6 +171,20 @@ packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
   --set "Viscous flow/Pressure space=continuous"
   --set "Volume diffusion/Pressure gradient=nodal")
 
+# The coupled scene as shipped since session 23 (solid space, recovered xi)
+# on the 27 spheres, to t = 0.005 s (issue 26; doc/validation.md,
+# "Packings: the solid space's step and mesh"): CFL 1.5 with and without
+# `Elastic solve interval = 2`, and 2 h (one level less, band and filter
+# doubled), against the scene (CFL 0.5). Measured (28 Nov 2026) on a
+# machine shared with two other sessions: 1-2 h of wall per case.
+packing_convergence_test(packing_solid_27 packing_154_coupled_3d.prm
+  0.9 3 packing_27_like_154_3d.csv 0.005 0.0025,0.005
+  --case "coarse:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.09;Level set/Filter thickness=0.112"
+  --case "cfl1.5_interval2:Time/CFL number=1.5;Volume diffusion/Elastic solve interval=2"
+  --case "cfl1.5:Time/CFL number=1.5"
+  --case "reference"
+  --reference reference)
+
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
 # settings of packing_154_surface_diffusion_3d.prm to its end time t =
