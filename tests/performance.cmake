@@ -169,7 +169,8 @@ packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
   --case "reference"
   --reference reference
   --set "Viscous flow/Pressure space=continuous"
-  --set "Volume diffusion/Pressure gradient=nodal")
+  --set "Volume diffusion/Pressure gradient=nodal"
+  --set "Time/CFL number=0.5")
 
 # The coupled scene as shipped since session 23 (solid space, recovered xi)
 # on the 27 spheres, to t = 0.005 s (issue 26; doc/validation.md,
@@ -183,7 +184,8 @@ packing_convergence_test(packing_solid_27 packing_154_coupled_3d.prm
   --case "cfl1.5_interval2:Time/CFL number=1.5;Volume diffusion/Elastic solve interval=2"
   --case "cfl1.5:Time/CFL number=1.5"
   --case "reference"
-  --reference reference)
+  --reference reference
+  --set "Time/CFL number=0.5")
 
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
