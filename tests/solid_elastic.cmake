@@ -5,6 +5,20 @@
 # void. doc/validation.md, "The solid-only elastic problem", has the tables.
 set(SOLID_SPACE --set "Viscous flow/Pressure space=solid")
 
+# The cut-cell rules of the cut spaces on plane scenes (CutCellRules: the
+# generated rule's integrals from fixed Gauss points with moment-fitted
+# weights, the surface's points evaluated directly) against
+# NonMatching::FEValues on every cut cell of an ellipse (ellipsoid):
+# the Q1 mass and stiffness of each part and the surface's integrals
+# agree to round-off (limit 1e-11 relative; doc/performance.md,
+# "Session 25").
+add_executable(cut_cell_rules cut_cell_rules.cc)
+target_link_libraries(cut_cell_rules levelsinter_lib)
+deal_ii_setup_target(cut_cell_rules)
+foreach(dim 2 3)
+  add_test(NAME cut_cell_rules_${dim}d COMMAND cut_cell_rules ${dim})
+endforeach()
+
 # The elastic inclusion (plane strain, Table 6 materials) of
 # mechanics_elastic_inclusion_2d in the solid space: exact p_in = (2/3)
 # gamma kappa (1 + nu) against a void. Measured at R/h = 6.4 and 12.8,

@@ -63,7 +63,10 @@ namespace levelsinter
     , vertex_kappa(inputs.alpha.fe().dofs_per_cell)
   {
     for (unsigned int i = 0; i < n_dofs; ++i)
-      (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
+      {
+        (is_pressure(i) ? pressure_dofs : velocity_dofs).push_back(i);
+        vertex_of.push_back(fe.system_to_component_index(i).second);
+      }
     if (inputs.extended_pressure)
       {
         for (const unsigned int i : pressure_dofs)
@@ -71,6 +74,14 @@ namespace levelsinter
         classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
           inputs.alpha.dof_handler(), inputs.alpha.alpha());
         classifier->reclassify();
+        // 3 points per direction as below; the fitted weights sit on the
+        // transition rule's points.
+        if (!measure.is_axisymmetric())
+          {
+            cut_rules = std::make_unique<CutCellRules<dim>>(
+              inputs.alpha.dof_handler(), inputs.alpha.alpha(), 3);
+            return;
+          }
         NonMatching::RegionUpdateFlags flags;
         flags.inside  = cell_flags;
         flags.outside = cell_flags;
@@ -322,27 +333,94 @@ namespace levelsinter
 
   template <int dim>
   void
+  StokesCellData<dim>::add_surface_points(
+    const std::vector<typename CutCellRules<dim>::SurfacePoint> &points)
+  {
+    for (const auto &p : points)
+      {
+        SurfacePoint point{p.normal, p.dS, {}, {}};
+        point.grad_w.assign(n_dofs, Tensor<2, dim>());
+        point.hoop.assign(n_dofs, 0.);
+        point.normal_w.assign(n_dofs, 0.);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          if (!is_pressure(i))
+            {
+              point.grad_w[i][component[i]] = p.gradient[vertex_of[i]];
+              point.normal_w[i] = p.value[vertex_of[i]] * p.normal[component[i]];
+            }
+        if (inputs.curvature)
+          for (unsigned int j = 0; j < vertex_kappa.size(); ++j)
+            point.curvature += vertex_kappa[j] * p.value[j];
+        surface.push_back(std::move(point));
+      }
+  }
+
+  template <int dim>
+  void
   StokesCellData<dim>::reinit_cut(
     const typename DoFHandler<dim>::active_cell_iterator &cell)
   {
     h = cell_size(cell);
     surface.clear();
-    gather_sharp_surface(cell);
+    cut_cell     = cell;
+    cut_location = classifier->location_to_level_set(cell);
+    if (!cut_rules)
+      gather_sharp_surface(cell);
+    else if (cut_location == NonMatching::LocationToLevelSet::intersected)
+      {
+        cut_rules->generate(cell);
+        if (inputs.curvature)
+          same_cell(cell, inputs.alpha.dof_handler())
+            ->get_dof_values(*inputs.curvature, vertex_kappa);
+        add_surface_points(cut_rules->surface());
+      }
     free_faces.clear();
     if (inputs.free_faces)
       gather_free_faces(cell);
   }
 
   template <int dim>
+  const FEValues<dim> *
+  StokesCellData<dim>::reinit_part(const Phase phase)
+  {
+    using Location    = NonMatching::LocationToLevelSet;
+    const bool inside = phase == Phase::solid;
+    if (!cut_rules)
+      {
+        const auto &region = inside ? cut_values->get_inside_fe_values() :
+                                      cut_values->get_outside_fe_values();
+        if (!region)
+          return nullptr;
+        reinit_shapes(*region);
+        return &*region;
+      }
+    if (cut_location != Location::intersected)
+      {
+        if ((cut_location == Location::inside) != inside)
+          return nullptr;
+        uniform_values.reinit(cut_cell);
+        reinit_shapes(uniform_values);
+        return &uniform_values;
+      }
+    if (!cut_rules->has_part(inside))
+      return nullptr;
+    transition_values.reinit(cut_cell);
+    reinit_shapes(transition_values);
+    // The fitted weights on the unit cell, times det J.
+    const auto &weights = cut_rules->weights(inside);
+    const auto &gauss   = cut_rules->cell_quadrature();
+    for (unsigned int k = 0; k < n_q; ++k)
+      JxW[k] *= weights[k] / gauss.weight(k);
+    return &transition_values;
+  }
+
+  template <int dim>
   bool
   StokesCellData<dim>::select_phase(const Phase phase)
   {
-    const auto &region = phase == Phase::solid ?
-                           cut_values->get_inside_fe_values() :
-                           cut_values->get_outside_fe_values();
+    const FEValues<dim> *region = reinit_part(phase);
     if (!region)
       return false;
-    reinit_shapes(*region);
     pressure_dofs = phase_pressure_dofs[phase == Phase::solid ? 0 : 1];
 
     // Each phase is pure on its side of the sharp interface: no smoothing

@@ -22,6 +22,7 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/scene_measure.h>
+#include <levelsinter/mechanics/cut_cell_rules.h>
 #include <levelsinter/mechanics/phase_law.h>
 #include <levelsinter/mechanics/velocity_pressure_operator.h>
 
@@ -238,6 +239,17 @@ namespace levelsinter
     void
     add_surface_points(const NonMatching::FEImmersedSurfaceValues<dim> &cut);
 
+    /** Shape data and weights of the part of the cell of reinit_cut() in
+     * @p phase; the FEValues they come from, or nullptr if the cell has no
+     * part there. */
+    const FEValues<dim> *
+    reinit_part(const Phase phase);
+
+    /** The same from the plane scenes' CutCellRules. */
+    void
+    add_surface_points(
+      const std::vector<typename CutCellRules<dim>::SurfacePoint> &points);
+
     void
     gather_free_faces(
       const typename DoFHandler<dim>::active_cell_iterator &cell);
@@ -261,7 +273,16 @@ namespace levelsinter
     // The extended pressure: each phase's pressure shape functions.
     std::array<std::vector<unsigned int>, 2> phase_pressure_dofs;
     std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
-    std::unique_ptr<NonMatching::FEValues<dim>>       cut_values;
+    // The cut cells of the extended pressure: CutCellRules on plane scenes
+    // (no FEValues built per cut cell), NonMatching::FEValues on
+    // axisymmetric ones and for the sharp surface of the other spaces.
+    std::unique_ptr<CutCellRules<dim>>          cut_rules;
+    std::unique_ptr<NonMatching::FEValues<dim>> cut_values;
+    // The cell of the last reinit_cut() and where it lies.
+    typename DoFHandler<dim>::active_cell_iterator cut_cell;
+    NonMatching::LocationToLevelSet                cut_location;
+    // The Q1 vertex of each shape function (its base element's index).
+    std::vector<unsigned int> vertex_of;
     // At the volume points (sized for the largest rule).
     Vector<double>                       vertex_alpha;
     Vector<double>                       vertex_kappa;
