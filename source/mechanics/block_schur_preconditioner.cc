@@ -16,13 +16,14 @@ namespace levelsinter
     const TrilinosWrappers::SparseMatrix      &schur_approximation,
     const std::vector<std::vector<double>>    &velocity_near_null_space,
     const unsigned int                         dim,
-    const bool                                 smoothed_aggregation)
+    const bool                                 smoothed_aggregation,
+    const unsigned int                         smoother_sweeps)
     : system_matrix(system_matrix)
     , schur_approximation(schur_approximation)
   {
     {
       // Smoothed aggregation for a vector elliptic operator: Chebyshev
-      // smoother (2 sweeps), Q1 (no higher-order aggregation), no dropping
+      // smoother (2 sweeps unless told), Q1 (no higher-order aggregation), no dropping
       // of weak connections and a W-cycle. With a viscosity contrast the
       // V-cycle's coarse correction is what weakens as h shrinks (an exact
       // solve of the first coarse level restores the count; more smoothing
@@ -36,7 +37,7 @@ namespace levelsinter
       data.elliptic              = true;
       data.higher_order_elements = false;
       data.smoother_type         = "Chebyshev";
-      data.smoother_sweeps       = 2;
+      data.smoother_sweeps       = smoother_sweeps;
       data.aggregation_threshold = 0;
       data.w_cycle               = true;
       const auto &matrix = system_matrix.block(0, 0).trilinos_matrix();

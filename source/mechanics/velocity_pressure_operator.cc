@@ -84,14 +84,16 @@ namespace levelsinter
                      TrilinosWrappers::MPI::BlockVector        &solution,
                      const double                               tolerance,
                      const unsigned int max_iterations,
-                     const bool         smoothed_aggregation)
+                     const bool         smoothed_aggregation,
+                     const unsigned int smoother_sweeps)
   {
     using BlockVector = TrilinosWrappers::MPI::BlockVector;
     const BlockSchurPreconditioner preconditioner(matrix,
                                                   schur,
                                                   velocity_modes,
                                                   dim,
-                                                  smoothed_aggregation);
+                                                  smoothed_aggregation,
+                                                  smoother_sweeps);
     SolverControl control(max_iterations, tolerance * rhs.l2_norm());
     SolverFGMRES<BlockVector> solver(
       control, SolverFGMRES<BlockVector>::AdditionalData(100));

@@ -33,14 +33,16 @@ namespace levelsinter
      * rigid-body modes, one vector per mode over the locally owned rows of
      * A), and the Jacobi preconditioner of @p schur_approximation. @p dim
      * sets how large a coarse level of A is still solved directly;
-     * @p smoothed_aggregation chooses smoothed or plain aggregation.
+     * @p smoothed_aggregation chooses smoothed or plain aggregation;
+     * @p smoother_sweeps is the degree of the Chebyshev smoother.
      */
     BlockSchurPreconditioner(
       const TrilinosWrappers::BlockSparseMatrix &system_matrix,
       const TrilinosWrappers::SparseMatrix      &schur_approximation,
       const std::vector<std::vector<double>>    &velocity_near_null_space,
       const unsigned int                         dim,
-      const bool                                 smoothed_aggregation);
+      const bool                                 smoothed_aggregation,
+      const unsigned int                         smoother_sweeps);
 
     void
     vmult(TrilinosWrappers::MPI::BlockVector       &dst,

@@ -119,7 +119,8 @@ namespace levelsinter
    * @p velocity_modes as near-null space, CG/Jacobi on the Schur
    * approximation @p schur) on the block system, to the relative residual
    * @p tolerance, from @p solution (owned, without ghosts), with smoothed
-   * or plain aggregation in the AMG (@p smoothed_aggregation); returns the
+   * or plain aggregation in the AMG (@p smoothed_aggregation) and its
+   * Chebyshev smoother of degree @p smoother_sweeps; returns the
    * iterations. A failure throws with the entries that help.
    */
   unsigned int
@@ -131,5 +132,6 @@ namespace levelsinter
                      TrilinosWrappers::MPI::BlockVector        &solution,
                      const double                               tolerance,
                      const unsigned int max_iterations,
-                     const bool         smoothed_aggregation);
+                     const bool         smoothed_aggregation,
+                     const unsigned int smoother_sweeps = 2);
 } // namespace levelsinter
