@@ -398,7 +398,7 @@ namespace levelsinter
     // for their viscosity contrast, which the solid alone does not have.
     // On the 27 spheres like the 154 (1 rank, 3 solves): FGMRES 30/30/21
     // against 27/27/19 iterations, 21.7 s against 30.9 s, the metrics
-    // within 4.4e-4 (doc/performance.md, "Session 25").
+    // within 4.0e-4 (doc/performance.md, "Session 25").
     const unsigned int iterations =
       solve_block_system(system_matrix,
                          schur_matrix.block(1, 1),
