@@ -39,8 +39,10 @@ if a check fails.
       of the same solid volume (doc/numerics.md, "The dihedral angle at the
       triple line"): two truncated discs (BODY_DIM 2) or spheres (3)
       meeting at psi, cos(psi/2) = RATIO / 2; prints the radius (the
-      circle fitted to each grain), the grain-boundary radius, the fitted
-      circles' centre distance and the dihedral angle, measured and exact;
+      circle fitted to each grain), the grain-boundary radius (where the
+      near circles meet its plane; the rays' in runs without that column),
+      the fitted circles' centre distance and the dihedral angle, measured
+      and exact;
       with --csv the table over the run; --share S: the domain holds the
       share S of the pair (a quarter box: 0.25), its solid volume is S
       times the pair's; --row N: the run is a closed row of N equal grains
@@ -51,10 +53,12 @@ if a check fails.
       spacing D0 at t = 0: the spacing D0 (1 + COLUMN) of RUN/metrics.csv
       at the last row against the exact equilibrium's (`equilibrium
       --row N`), d / d_exact - 1 within [LOW, HIGH]. COLUMN:
-      grain_centre_distance_change_mean (the rigid grains) or
-      centre_distance_change_mean (the packing analysis' power-cell
-      centroids, also without grain boundaries); --csv: the spacing over
-      the run.
+      grain_centre_distance_change_mean (the rigid grains, against the
+      exact centres' spacing) or centre_distance_change_mean (the packing
+      analysis' power-cell centroids, also without grain boundaries,
+      against the exact grains' centroids' spacing, 6.1 % above their
+      centres' at psi = 120 degrees and N = 12; at t = 0 the centroids'
+      spacing is within 3e-4 of D0); --csv: the spacing over the run.
   check_grains.py conserved RUN TOLERANCE
       every grain keeps its share of the solid: at every row of
       metrics.csv grain_volume_change_max exceeds |volume_change| (each
@@ -76,6 +80,17 @@ if a check fails.
       neck-root curvature kappa' and the explicit one against the fitted
       circles' 1/R; the rigid approach rate's mean and the centre
       distance's change; writes OUT.csv.
+  check_grains.py swing RUN RATIO BODY_DIM T_FROM
+      the pair of `equilibrium` over the rows with time >= T_FROM: the
+      range and mean of R's, a's (near circles and rays) and d's errors
+      and their mean change between consecutive rows (the swing of single
+      rows), psi's and the rigid approach rate's range and mean.
+  check_grains.py centroids-row RUN RATIO N [--from T --limit L] [--csv OUT.csv]
+      a closed row of N grains: per row, the rigid centres' spacing
+      against the exact state's d, the grains' centroids' spacing
+      (centroid_distance) against the exact grains' centroids', and the
+      centroids' offset from the rigid centres; --limit: the centroids'
+      spacing within the relative L at every row with time >= T.
   check_grains.py angle RUN RATIO T_FROM TOLERANCE_DEGREES
       the dihedral angle of grain_boundaries.csv at every row with time
       >= T_FROM (the triple line relaxed) within TOLERANCE_DEGREES of psi,
@@ -244,6 +259,25 @@ def exact_equilibrium(volume, ratio, body, grains=0):
     return radius, radius * math.sin(beta), 2 * radius * c, 2 * math.degrees(beta)
 
 
+def row_centroid_spacing(volume, ratio, grains):
+    """The spacing of the grains' centroids in the exact state of a closed
+    row of `grains` equal grains of total area `volume` (2D). Each grain is
+    a disc of radius R about its centre at rho from the ring's centre O,
+    less two segments of area s = R^2 (beta - sin(beta) cos(beta)) whose
+    centroids lie g = 2 R^3 sin(beta)^3 / (3 s) from the disc's centre
+    along the normals of the cuts, the rays from O at +-pi/N: the cuts are
+    turned towards O, so the grain's centroid lies 2 s g sin(pi/N) / A
+    further out than its centre, and the centroids' spacing exceeds d (by
+    6.1 % at psi = 120 degrees, N = 12)."""
+    radius, _, d, _ = exact_equilibrium(volume, ratio, 2, grains)
+    beta = math.acos(ratio / 2)
+    area = volume / grains
+    rho = d / 2 / math.sin(math.pi / grains)
+    shift = 4 * radius ** 3 * math.sin(beta) ** 3 / 3 * \
+        math.sin(math.pi / grains) / area
+    return 2 * (rho + shift) * math.sin(math.pi / grains)
+
+
 def equilibrium_table(run, ratio, body, share=1, grains=0):
     """Per row of RUN/grain_boundaries.csv with a metrics row: step, time,
     measured R, a, d, psi and their exact values at the row's volume (the
@@ -257,10 +291,23 @@ def equilibrium_table(run, ratio, body, share=1, grains=0):
         if row["step"] not in volume:
             continue
         exact = exact_equilibrium(volume[row["step"]], ratio, body, grains)
-        measured = (row["fitted_radius"], row["radius"],
+        measured = (row["fitted_radius"], gb_radius(row),
                     row["fitted_centre_distance"], row["dihedral_angle"])
-        table.append((row["step"], row["time"]) + measured + exact)
+        table.append((row["step"], row["time"]) + measured + exact +
+                     (row["radius"],))
     return table
+
+
+def gb_radius(row):
+    """The grain boundary's radius a of a row of grain_boundaries.csv as
+    the exact state defines it: where the near circles (those of the
+    dihedral angle) meet the boundary's plane, the sharp triple line. The
+    rays (`radius`, the contact law's a) read the discrete groove, which
+    the kink's ridge rounds over k cells: 1.2-1.5 % wider at R/h = 16-32
+    (doc/validation.md, "Settling the pair: the contact law's step"). Runs
+    without that column, or rows without a near circle: the rays'."""
+    a = row.get("fitted_gb_radius", math.nan)
+    return a if math.isfinite(a) else row["radius"]
 
 
 def equilibrium(run, ratio, body, out, share=1, grains=0):
@@ -278,7 +325,7 @@ def equilibrium(run, ratio, body, out, share=1, grains=0):
         with open(out, "w") as f:
             f.write("step,time,radius,gb_radius,centre_distance,dihedral_angle,"
                     "exact_radius,exact_gb_radius,exact_centre_distance,"
-                    "exact_dihedral_angle\n")
+                    "exact_dihedral_angle,gb_radius_rays\n")
             for r in table:
                 f.write(",".join("%.8g" % v for v in r) + "\n")
 
@@ -379,6 +426,71 @@ def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1,
              tolerance_degrees)
 
 
+def swing(run, ratio, body, t_from):
+    """The pair's rows with time >= t_from against the exact state: per
+    quantity (R, a where the near circles meet the plane, a of the rays,
+    d) the range and mean of the relative error (per cent) and the mean
+    change between consecutive rows; psi's range and mean, the rigid
+    approach rate's range and mean."""
+    table = [r for r in equilibrium_table(run, ratio, body) if r[1] >= t_from]
+    if len(table) < 2:
+        fail("fewer than two rows at t >= %g" % t_from)
+    columns = (("R", 2, 6), ("a", 3, 7), ("a, rays", 10, 7), ("d", 4, 8))
+    for name, m, e in columns:
+        error = [100 * (r[m] / r[e] - 1) for r in table]
+        change = [abs(y - x) for x, y in zip(error, error[1:])]
+        print("%-8s %+.2f to %+.2f %%, mean %+.2f %%, mean change between "
+              "rows %.2f %%" % (name, min(error), max(error),
+                                sum(error) / len(error),
+                                sum(change) / len(change)))
+    psi = [r[5] for r in table]
+    rates = [row["approach_rate"] for row in rows(run + "/grain_boundaries.csv")
+             if row["time"] >= t_from and math.isfinite(row["approach_rate"])]
+    print("psi %.1f to %.1f, mean %.2f; approach rate %+.2f to %+.2f, mean "
+          "%+.2f; %d rows from t = %g" %
+          (min(psi), max(psi), sum(psi) / len(psi), min(rates), max(rates),
+           sum(rates) / len(rates), len(table), table[0][1]))
+
+
+def row_centroids(run, ratio, grains, out=None, t_from=0, limit=None):
+    """A closed row of `grains` grains: per metrics row, the mean over the
+    grain boundaries of the rigid centres' distance against the exact
+    state's d and of the grains' centroids' distance against the exact
+    state's centroids' spacing (row_centroid_spacing), per cent, and the
+    centroids' offset from the rigid centres (their distance's
+    difference). With `limit`: every row with time >= t_from within the
+    relative `limit` of the exact centroids' spacing."""
+    metrics = {row["step"]: row for row in rows(run + "/metrics.csv")}
+    pairs = rows(run + "/grain_boundaries.csv")
+    table = []
+    for step in sorted(set(row["step"] for row in pairs) & set(metrics)):
+        at = [row for row in pairs if row["step"] == step]
+        volume = metrics[step]["solid_volume"]
+        rigid = sum(row["centre_distance"] for row in at) / len(at)
+        centroid = sum(row["centroid_distance"] for row in at) / len(at)
+        table.append((at[0]["time"],
+                      100 * (rigid / exact_equilibrium(volume, ratio, 2,
+                                                       grains)[2] - 1),
+                      100 * (centroid / row_centroid_spacing(volume, ratio,
+                                                             grains) - 1),
+                      centroid - rigid))
+    for r in table:
+        print("t = %.4f: rigid centres %+.2f %%, centroids %+.2f %%, offset "
+              "%.5f" % r)
+    if limit is not None:
+        late = [r[2] for r in table if r[0] >= t_from]
+        print("centroids' spacing over %d rows at t >= %g: %+.2f to %+.2f %%" %
+              (len(late), t_from, min(late), max(late)))
+        if not late or max(abs(e) for e in late) > 100 * limit:
+            fail("centroids' spacing off by more than %g" % limit)
+    if out:
+        with open(out, "w") as f:
+            f.write("time,rigid_spacing_error_percent,"
+                    "centroid_spacing_error_percent,centroid_offset\n")
+            for r in table:
+                f.write(",".join("%.8g" % v for v in r) + "\n")
+
+
 def angle(run, ratio, t_from, tolerance_degrees):
     psi = 2 * math.degrees(math.acos(ratio / 2))
     measured = [row["dihedral_angle"] for row in rows(run + "/grain_boundaries.csv")
@@ -412,12 +524,18 @@ def initial(run, radius, tolerance_degrees, tolerance):
 
 def spacing(run, ratio, grains, d0, column, low, high, out=None):
     """The closed row's centre spacing d = d0 (1 + COLUMN) against the
-    exact equilibrium's d at each metrics row (the row's solid area)."""
+    exact equilibrium's at each metrics row (the row's solid area): its
+    centres' spacing d for the rigid grains, its centroids' spacing for
+    the power-cell centroids (centre_distance_change_mean)."""
+    centroids = column == "centre_distance_change_mean"
     table = []
     for row in rows(run + "/metrics.csv"):
         if math.isnan(row[column]):
             continue  # the packing analysis' rows only
-        exact = exact_equilibrium(row["solid_volume"], ratio, 2, grains)[2]
+        if centroids:
+            exact = row_centroid_spacing(row["solid_volume"], ratio, grains)
+        else:
+            exact = exact_equilibrium(row["solid_volume"], ratio, 2, grains)[2]
         table.append((row["time"], d0 * (1 + row[column]), exact))
     t, d, exact = table[-1]
     error = d / exact - 1
@@ -471,6 +589,14 @@ if __name__ == "__main__":
                 grains=grains)
     elif mode == "angle":
         angle(args[0], *map(float, args[1:4]))
+    elif mode == "swing":
+        swing(args[0], float(args[1]), int(args[2]), float(args[3]))
+    elif mode == "centroids-row":
+        options = dict(zip(args[3::2], args[4::2]))
+        row_centroids(args[0], float(args[1]), int(args[2]),
+                      options.get("--csv"), float(options.get("--from", 0)),
+                      float(options["--limit"]) if "--limit" in options
+                      else None)
     elif mode == "initial":
         initial(args[0], *map(float, args[1:4]))
     elif mode == "spacing":

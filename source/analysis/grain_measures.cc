@@ -244,8 +244,9 @@ namespace levelsinter
     };
     interface_measures::integrate_regions(alpha, integrands);
     Utilities::MPI::sum(volume, comm, volume);
+    std::vector<Point<dim>>   centroid;
     const std::vector<double> grain_volume =
-      grain_geometry::grain_volumes(alpha, cells);
+      grain_geometry::grain_volumes(alpha, cells, nullptr, &centroid);
     std::copy(grain_volume.begin(), grain_volume.end(), volume.begin());
     Utilities::MPI::sum(moments, comm, moments);
     double solid = 0;
@@ -307,8 +308,10 @@ namespace levelsinter
         // 180 degrees), +cos(psi/2) on i's. The means over the sides and
         // ends with a fit.
         const unsigned int k = &b - boundaries.data();
-        double cos_half = 0, fit_radius = 0, centre[2] = {0, 0};
-        unsigned int n_near = 0, n_whole = 0, n_centre[2] = {0, 0};
+        double cos_half = 0, fit_radius = 0, centre[2] = {0, 0},
+               near_end = 0;
+        unsigned int n_near = 0, n_whole = 0, n_centre[2] = {0, 0},
+                     n_end = 0;
         for (unsigned int side = 0; side < 2; ++side)
           for (unsigned int end = 0; end < 2; ++end)
             {
@@ -319,6 +322,17 @@ namespace levelsinter
                 {
                   cos_half += (side == 1 ? near[0] : -near[0]) / near[2];
                   ++n_near;
+                  // Where the near circle meets the plane: the sharp
+                  // triple line, the exact state's a = R sin(psi/2). The
+                  // rays read a at the groove, which the kink's ridge
+                  // rounds over k cells (doc/numerics.md, "The neck's
+                  // width at the groove").
+                  if (std::abs(near[0]) < near[2])
+                    {
+                      near_end += near[1] + std::sqrt(near[2] * near[2] -
+                                                      near[0] * near[0]);
+                      ++n_end;
+                    }
                 }
               const auto whole = fitted_circle(fit(k, 1, side, end));
               if (std::isfinite(whole[2]))
@@ -351,7 +365,9 @@ namespace levelsinter
                         dihedral_angle,
                         n_whole > 0 ? fit_radius / n_whole : nan,
                         circle_distance,
-                        explicit_root});
+                        explicit_root,
+                        n_end > 0 ? near_end / n_end : nan,
+                        centroid[b.i].distance(centroid[b.j])});
       }
     std::vector<double> values = {double(n_grains),
                                   double(nb),
@@ -401,7 +417,9 @@ namespace levelsinter
                                      "dihedral_angle",
                                      "fitted_radius",
                                      "fitted_centre_distance",
-                                     "root_curvature_explicit"},
+                                     "root_curvature_explicit",
+                                     "fitted_gb_radius",
+                                     "centroid_distance"},
             comm,
             kept_rows);
         for (const auto &row : rows)

@@ -228,11 +228,13 @@ namespace levelsinter::grain_geometry
   std::vector<double>
   grain_volumes(const LevelSetField<dim> &level_set,
                 const PowerCells<dim>    &grains,
-                FullMatrix<double>       *jacobian)
+                FullMatrix<double>       *jacobian,
+                std::vector<Point<dim>>  *centroids)
   {
     const auto               &c = grains.centres();
     const unsigned int        n = c.size();
     std::vector<double>       volume(n, 0.);
+    std::vector<double>       moment(centroids ? n * dim : 0, 0.);
     std::vector<unsigned int> near;
     std::vector<double>       share;
     if (jacobian)
@@ -249,6 +251,10 @@ namespace levelsinter::grain_geometry
           grain_shares(grains, x, near, width, share);
           for (unsigned int a = 0; a < near.size(); ++a)
             volume[near[a]] += share[a] * JxW;
+          if (centroids)
+            for (unsigned int a = 0; a < near.size(); ++a)
+              for (unsigned int d = 0; d < dim; ++d)
+                moment[near[a] * dim + d] += share[a] * JxW * x[d];
           // Within the ramp of (k, l) the share of k grows by 1 / (2 d_kl
           // width) per unit of w_k.
           if (jacobian)
@@ -275,6 +281,16 @@ namespace levelsinter::grain_geometry
     Utilities::MPI::sum(volume, comm, volume);
     if (jacobian)
       Utilities::MPI::sum(*jacobian, comm, *jacobian);
+    if (centroids)
+      {
+        Utilities::MPI::sum(moment, comm, moment);
+        centroids->assign(n, Point<dim>());
+        for (unsigned int i = 0; i < n; ++i)
+          for (unsigned int d = 0; d < dim; ++d)
+            (*centroids)[i][d] =
+              volume[i] > 0 ? moment[i * dim + d] / volume[i] :
+                              std::numeric_limits<double>::quiet_NaN();
+      }
     return volume;
   }
 
@@ -340,11 +356,13 @@ namespace levelsinter::grain_geometry
   template std::vector<double>
   grain_volumes(const LevelSetField<2> &,
                 const PowerCells<2> &,
-                FullMatrix<double> *);
+                FullMatrix<double> *,
+                std::vector<Point<2>> *);
   template std::vector<double>
   grain_volumes(const LevelSetField<3> &,
                 const PowerCells<3> &,
-                FullMatrix<double> *);
+                FullMatrix<double> *,
+                std::vector<Point<3>> *);
   template void
   cell_grains(const LevelSetField<2> &,
               const PowerCells<2> &,

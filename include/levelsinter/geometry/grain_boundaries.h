@@ -103,13 +103,16 @@ namespace levelsinter
      * the cut-cell quadrature of the solid split by grain_shares() with the
      * width of each mesh cell. With @p jacobian, also the derivatives
      * dV_i / dw_j of these volumes in the weights (w_i = r_i^2), from the
-     * ramps of pairs (exact where two grains meet). Collective.
+     * ramps of pairs (exact where two grains meet). With @p centroids,
+     * also each grain's centroid (of its solid in the domain, split the
+     * same way; NaN for a grain without solid). Collective.
      */
     template <int dim>
     std::vector<double>
     grain_volumes(const LevelSetField<dim> &level_set,
                   const PowerCells<dim>    &grains,
-                  FullMatrix<double>       *jacobian = nullptr);
+                  FullMatrix<double>       *jacobian  = nullptr,
+                  std::vector<Point<dim>>  *centroids = nullptr);
 
     /**
      * Per cell of the level set's mesh (active cell index; locally owned
