@@ -99,6 +99,7 @@ namespace levelsinter
                 extension_settings<dim>(parameters, symmetry_planes),
                 timer)
     , solve_interval(parameters.solve_interval)
+    , total_elastic_state(parameters.total_elastic_state)
   {
     // The paper's Eq. 108 on {alpha_h = 0}: the Laplace jump stays in the
     // cut cells, clear of the nodes where xi reads grad p.
@@ -132,8 +133,12 @@ namespace levelsinter
   VolumeDiffusion<dim>::accept_step(const LevelSetField<dim> &)
   {
     // Delta u = dt v of the solve the step used, also when a shorter step
-    // kept it (shorten_step()); once per solve.
-    if (solved_in_step)
+    // kept it (shorten_step()); once per solve. With the total state u
+    // stays 0: in linear elasticity with the surface traction alone the
+    // stress is that of the current shape whatever the path, and the ghost
+    // penalty then holds the whole displacement, not only its last
+    // increment (doc/numerics.md).
+    if (solved_in_step && !total_elastic_state)
       operator_->advance_displacement(solved_step);
     solved_in_step = false;
     ++steps_since_solve;
