@@ -25,6 +25,12 @@ namespace levelsinter
     // modes up to n ~ R / h that lambda = 6 cells filters out; measured at
     // this h only.
     constexpr double measured_flux_limit = 16;
+    // With `Elastic state = total` (ghost penalty 1): stable dt* = 2.05e-4,
+    // unstable 2.37e-4 at h = 1/128 (doc/validation.md, "Volume diffusion:
+    // the elastic state in the cut cells"), c = 5.9. The incremental
+    // form's fading penalty smooths xi over the steps, which this form
+    // does not.
+    constexpr double measured_total_flux_limit = 5.9;
 
     // The first dim components of a velocity-pressure vector as one vector
     // field.
@@ -91,7 +97,9 @@ namespace levelsinter
       // the decay rate of the finest modes, n ~ R / h, is proportional to
       // (2/3)(1 + nu) C_v gamma / h^3.
       return parameters.time_step_factor *
-             (parameters.boundary_flux ? measured_flux_limit : measured_limit) /
+             (!parameters.boundary_flux        ? measured_limit :
+              parameters.total_elastic_state ? measured_total_flux_limit :
+                                               measured_flux_limit) /
              (2. / 3 * (1 + nu) * coefficient * materials.surface_tension);
     }())
     , timer(timer)
@@ -99,6 +107,7 @@ namespace levelsinter
                 extension_settings<dim>(parameters, symmetry_planes),
                 timer)
     , solve_interval(parameters.solve_interval)
+    , total_elastic_state(parameters.total_elastic_state)
   {
     // The paper's Eq. 108 on {alpha_h = 0}: the Laplace jump stays in the
     // cut cells, clear of the nodes where xi reads grad p.
@@ -132,8 +141,12 @@ namespace levelsinter
   VolumeDiffusion<dim>::accept_step(const LevelSetField<dim> &)
   {
     // Delta u = dt v of the solve the step used, also when a shorter step
-    // kept it (shorten_step()); once per solve.
-    if (solved_in_step)
+    // kept it (shorten_step()); once per solve. With the total state u
+    // stays 0: in linear elasticity with the surface traction alone the
+    // stress is that of the current shape whatever the path, and the ghost
+    // penalty then holds the whole displacement, not only its last
+    // increment (doc/numerics.md).
+    if (solved_in_step && !total_elastic_state)
       operator_->advance_displacement(solved_step);
     solved_in_step = false;
     ++steps_since_solve;

@@ -94,6 +94,17 @@ namespace levelsinter
                         "read); for Viscous flow/Pressure space = solid. "
                         "doc/numerics.md, \"Volume diffusion: xi as the "
                         "boundary flux\".");
+      prm.declare_entry("Elastic state",
+                        "incremental",
+                        Patterns::Selection("incremental|total"),
+                        "incremental: u^n = u^{n-1} + dt v^n (Eq. 92), the "
+                        "ghost penalty and drag act on each step's increment "
+                        "only, so their hold on the accumulated displacement "
+                        "fades over the steps; total: every elastic solve "
+                        "starts from u = 0, the stress of the current shape, "
+                        "with the stabilisation on the whole displacement. "
+                        "doc/numerics.md, \"Volume diffusion: the elastic "
+                        "state in the cut cells\".");
       prm.declare_entry("Solver tolerance",
                         "1e-10",
                         Patterns::Double(0),
@@ -145,6 +156,7 @@ namespace levelsinter
     linear_extrapolation = prm.get("Extrapolation") == "linear";
     recovered_gradient   = prm.get("Pressure gradient") == "recovered";
     boundary_flux        = prm.get("Pressure gradient") == "flux";
+    total_elastic_state  = prm.get("Elastic state") == "total";
     solver_tolerance = prm.get_double("Solver tolerance");
     max_iterations   = prm.get_integer("Maximum solver iterations");
     time_step_factor = prm.get_double("Time step factor");

@@ -174,6 +174,8 @@ namespace levelsinter
     // whether the current step solved, and whether the next step must
     // (no solve on the current DoFs yet).
     const unsigned int solve_interval;
+    // `Elastic state = total`: the displacement is never advanced.
+    const bool         total_elastic_state;
     unsigned int       steps_since_solve = 0;
     bool               solved_in_step    = false;
     bool               must_solve        = true;

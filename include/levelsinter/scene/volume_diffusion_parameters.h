@@ -52,6 +52,9 @@ namespace levelsinter
     bool         linear_extrapolation = true;  // or constant (Eq. 111)
     bool         recovered_gradient   = false; // grad p over the solid part
     bool         boundary_flux        = false; // xi from Green's formula
+    // Each elastic solve from u = 0, the stress of the current shape (no
+    // u^{n-1}); false: u^n = u^{n-1} + dt v^n (the paper's Eq. 92).
+    bool         total_elastic_state  = false;
     double       solver_tolerance = 1e-10;
     unsigned int max_iterations   = 1000;
     // Fraction of the measured explicit stability limit of v = -C_v xi N
