@@ -171,6 +171,12 @@ namespace levelsinter
     // Cells couple everything (eps:eps all velocity components, div, ASGS);
     // the ghost-penalty faces couple each component with itself across
     // them, on the DoFs no constraint removes (assemble_ghost_penalty()).
+    // The cells' pattern holds the pairs within each owned cell, so a face
+    // between two owned cells adds only the pairs of a DoF of one cell and
+    // one of the other that the two do not share (in 3D 4 x 4 per
+    // component on a regular face, against 16 x 16 through
+    // add_entries_local_to_global(), which was two thirds of this set-up:
+    // doc/performance.md, "Session 25").
     const unsigned int           n_c = dim + 1;
     Table<2, DoFTools::Coupling> cells(n_c, n_c), schur_cells(n_c, n_c);
     for (unsigned int c = 0; c < n_c; ++c)
@@ -183,7 +189,21 @@ namespace levelsinter
     const MPI_Comm comm = solid_dofs.get_communicator();
     std::vector<types::global_dof_index> cell_dofs(
       finite_element.dofs_per_cell),
-      neighbor_dofs(finite_element.dofs_per_cell), pair;
+      neighbor_dofs(finite_element.dofs_per_cell), own, other;
+    // The DoFs of component @p c in @p dofs that @p not_in lacks and no
+    // constraint removes, sorted.
+    const auto only_in = [&](const std::vector<types::global_dof_index> &dofs,
+                             const std::vector<types::global_dof_index> &not_in,
+                             const unsigned int                          c,
+                             std::vector<types::global_dof_index> &result) {
+      result.clear();
+      for (unsigned int i = 0; i < dofs.size(); ++i)
+        if (finite_element.system_to_component_index(i).first == c &&
+            std::find(not_in.begin(), not_in.end(), dofs[i]) == not_in.end() &&
+            !constraints.is_constrained(dofs[i]))
+          result.push_back(dofs[i]);
+      std::sort(result.begin(), result.end());
+    };
     const auto make = [&](const Table<2, DoFTools::Coupling> &coupling,
                           const unsigned int first_component,
                           TrilinosWrappers::BlockSparseMatrix &matrix) {
@@ -206,15 +226,25 @@ namespace levelsinter
         cell->get_dof_indices(cell_dofs);
         neighbor->get_dof_indices(neighbor_dofs);
         for (unsigned int c = first_component; c < n_c; ++c)
-          {
-            pair.clear();
-            for (unsigned int i = 0; i < cell_dofs.size(); ++i)
-              if (finite_element.system_to_component_index(i).first == c)
-                for (const auto index : {cell_dofs[i], neighbor_dofs[i]})
-                  if (!constraints.is_constrained(index))
-                    pair.push_back(index);
-            constraints.add_entries_local_to_global(pair, dsp, false);
-          }
+          if (neighbor->is_locally_owned())
+            {
+              only_in(cell_dofs, neighbor_dofs, c, own);
+              only_in(neighbor_dofs, cell_dofs, c, other);
+              for (const auto i : own)
+                dsp.add_entries(i, other.begin(), other.end(), true);
+              for (const auto j : other)
+                dsp.add_entries(j, own.begin(), own.end(), true);
+            }
+          else
+            {
+              // A ghost neighbour's own pairs are in its owner's pattern,
+              // not in the rows of this rank's that the assembly writes to
+              // and sends on: every pair of the two cells goes in here.
+              only_in(cell_dofs, {}, c, own);
+              only_in(neighbor_dofs, {}, c, other);
+              own.insert(own.end(), other.begin(), other.end());
+              constraints.add_entries_local_to_global(own, dsp, false);
+            }
       });
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
       matrix.reinit(owned_partitioning, dsp, comm);
