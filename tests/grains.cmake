@@ -385,44 +385,38 @@ grains_check(grains_unequal_2d_np2_conserved grains_unequal_2d_np2 conserved
 # most 1.4e-4 (the solid's own drift); limit 1e-5. At t = 24.4 a new
 # contact's neck sets the step to 0.02 and below, so the curve ends
 # before it.
-set(name study_grains_packing_27_3d_conserve)
-add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
-  --set "Output/Field formats=none" --set "Output/Directory=${name}"
-  --set "Grain boundaries/Conserve grain volumes=true"
-  --set "Time/End time=24" ${GRAIN_SCENES}/grains_packing_27_3d.prm)
-add_test(NAME ${name} COMMAND ${CHECK_GRAINS} conserved ${name} 1e-5)
-add_test(NAME ${name}_plot
-  COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py ${name}
-    ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_27_3d_conserve.png
-    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_27_3d_conserve.csv)
-set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
-  LABELS validation-long)
-set_tests_properties(${name} ${name}_plot PROPERTIES FIXTURES_REQUIRED ${name}
-  LABELS validation-long)
+# grains_packing_study(NAME ARGS...): the 27-grain packing with conserved
+# grain volumes to t = 24 with the extra ARGS, each grain's share of the
+# solid checked (limit 1e-5), and its densification plot and CSV
+# (doc/validation_data/NAME without "study_").
+function(grains_packing_study name)
+  string(REPLACE "study_" "" data ${name})
+  add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
+    --set "Output/Field formats=none" --set "Output/Directory=${name}"
+    --set "Grain boundaries/Conserve grain volumes=true" ${ARGN}
+    --set "Time/End time=24" ${GRAIN_SCENES}/grains_packing_27_3d.prm)
+  add_test(NAME ${name} COMMAND ${CHECK_GRAINS} conserved ${name} 1e-5)
+  add_test(NAME ${name}_plot
+    COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py ${name}
+      ${CMAKE_SOURCE_DIR}/doc/validation_data/${data}.png
+      --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/${data}.csv)
+  set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
+    LABELS validation-long)
+  set_tests_properties(${name} ${name}_plot PROPERTIES
+    FIXTURES_REQUIRED ${name} LABELS validation-long)
+endfunction()
+grains_packing_study(study_grains_packing_27_3d_conserve)
 # The same packing at Maximum level 3 (R/h = 6.4-8, the band at 0.8 E)
 # to t = 24: run to t = 11.1 in the tenth increment (58 steps, 22.5 min of
 # CPU, 1 rank; doc/validation.md "Densification of the 27-grain packing
 # at level 3", data in archive/grains_packing_27_3d_level3/), every
 # grain's share of the solid measured within 9.4e-7; limit 1e-5 as above.
 # The whole curve is about 122 steps, 45 min of CPU on an idle core.
-set(name study_grains_packing_27_3d_level3)
-add_test(NAME ${name}_run COMMAND $<TARGET_FILE:levelsinter> --overwrite
-  --set "Output/Field formats=none" --set "Output/Directory=${name}"
-  --set "Grain boundaries/Conserve grain volumes=true"
+grains_packing_study(study_grains_packing_27_3d_level3
   --set "Mesh refinement/Maximum level=3"
   --set "Level set/Filter thickness=0.075"
   --set "Mesh refinement/Band width=0.06"
-  --set "Output/Checkpoint minutes=10"
-  --set "Time/End time=24" ${GRAIN_SCENES}/grains_packing_27_3d.prm)
-add_test(NAME ${name} COMMAND ${CHECK_GRAINS} conserved ${name} 1e-5)
-add_test(NAME ${name}_plot
-  COMMAND ${CMAKE_SOURCE_DIR}/scripts/plot_densification.py ${name}
-    ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_27_3d_level3.png
-    --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/grains_packing_27_3d_level3.csv)
-set_tests_properties(${name}_run PROPERTIES FIXTURES_SETUP ${name}
-  LABELS validation-long)
-set_tests_properties(${name} ${name}_plot PROPERTIES FIXTURES_REQUIRED ${name}
-  LABELS validation-long)
+  --set "Output/Checkpoint minutes=10")
 # Restart 1 -> 2 ranks with the weights and the volumes at t = 0 in the
 # checkpoint (the settings of restart_grains_two_2d_np1_np2): measured
 # largest relative difference 5.6e-8, limit 1e-6. Volumes at t = 0 lost
