@@ -9,6 +9,7 @@
 
 #include <levelsinter/analysis/pores.h>
 #include <levelsinter/analysis/small_pore_closure.h>
+#include <levelsinter/level_set/box_mapping.h>
 
 #include <algorithm>
 #include <cmath>
@@ -200,7 +201,8 @@ namespace levelsinter
           const Quadrature<dim> &outside = generator.get_outside_quadrature();
           if (outside.size() == 0)
             continue;
-          FEValues<dim> values(level_set.fe(),
+          FEValues<dim> values(box_mapping<dim>(),
+                               level_set.fe(),
                                outside,
                                update_JxW_values | update_quadrature_points);
           values.reinit(cell);

@@ -16,6 +16,7 @@
 #include <levelsinter/geometry/geometry_band.h>
 #include <levelsinter/geometry/mixed_curvature_solver.h>
 #include <levelsinter/geometry/nodal_normals.h>
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 
 #include <algorithm>
@@ -195,7 +196,8 @@ namespace levelsinter
     const double lag       = previous_velocity.size() > 0 ? dt : 0.;
 
     const QGauss<dim>  quadrature(2);
-    FEValues<dim>      fe_values(level_set.fe(),
+    FEValues<dim> fe_values(box_mapping<dim>(),
+                            level_set.fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values | update_quadrature_points);

@@ -5,6 +5,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <levelsinter/geometry/nodal_normals.h>
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 
 #include <cmath>
@@ -45,7 +46,10 @@ namespace levelsinter
                  comm,
                  true);
     const QMidpoint<dim> centre;
-    FEValues<dim>  fe_values(level_set.fe(), centre, update_gradients);
+    FEValues<dim> fe_values(box_mapping<dim>(),
+                            level_set.fe(),
+                            centre,
+                            update_gradients);
     std::vector<Tensor<1, dim>> gradient(1);
     dealii::Vector<double>      local_alpha(level_set.fe().dofs_per_cell);
     for (const auto &cell : dofs.active_cell_iterators())

@@ -12,6 +12,7 @@
 #include <levelsinter/geometry/nodal_normals.h>
 #include <levelsinter/geometry/normal_gradient_extension.h>
 #include <levelsinter/geometry/recovered_gradient.h>
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 #include <levelsinter/level_set/same_cell.h>
@@ -93,7 +94,8 @@ namespace levelsinter
       add_solid_gradient_projection<dim>(
         level_set, field_dofs, component, field, count, gradient_sum);
     const Quadrature<dim> vertices(level_set.fe().get_unit_support_points());
-    FEValues<dim>         field_values(field_dofs.get_fe(),
+    FEValues<dim> field_values(box_mapping<dim>(),
+                               field_dofs.get_fe(),
                                vertices,
                                update_gradients);
     const FEValuesExtractors::Scalar pressure(component);
@@ -252,7 +254,10 @@ namespace levelsinter
     // grad grad p is the gradient of the nodal gradients, at the vertex,
     // on the cells whose vertices all carry clean gradients.
     const Quadrature<dim> vertices(level_set.fe().get_unit_support_points());
-    FEValues<dim> fe_values(level_set.fe(), vertices, update_gradients);
+    FEValues<dim> fe_values(box_mapping<dim>(),
+                            level_set.fe(),
+                            vertices,
+                            update_gradients);
     std::array<std::vector<Tensor<1, dim>>, dim> hessian_rows;
     for (auto &row : hessian_rows)
       row.resize(vertices.size());
@@ -324,7 +329,8 @@ namespace levelsinter
                  true);
 
     const QGauss<dim>  quadrature(2);
-    FEValues<dim>      fe_values(level_set.fe(),
+    FEValues<dim> fe_values(box_mapping<dim>(),
+                            level_set.fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);

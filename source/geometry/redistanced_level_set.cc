@@ -2,6 +2,8 @@
 #include <deal.II/base/quadrature_lib.h>
 
 #include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
 
 #include <deal.II/non_matching/fe_values.h>
 #include <deal.II/non_matching/mesh_classifier.h>
@@ -9,6 +11,7 @@
 #include <deal.II/numerics/rtree.h>
 
 #include <levelsinter/geometry/redistanced_level_set.h>
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/ghosted_vector.h>
 
@@ -95,9 +98,15 @@ namespace levelsinter
       classifier.reclassify();
       NonMatching::RegionUpdateFlags flags;
       flags.surface = update_normal_vectors | update_quadrature_points;
-      const hp::FECollection<dim> fe_collection(level_set.fe());
-      NonMatching::FEValues<dim>  cut_values(fe_collection,
-                                            QGauss<1>(4),
+      const hp::FECollection<dim>     fe_collection(level_set.fe());
+      const hp::MappingCollection<dim> mapping(box_mapping<dim>());
+      // NonMatching::FEValues keeps references to the rules.
+      const hp::QCollection<dim> cells{QGauss<dim>(4)};
+      const hp::QCollection<1>   lines{QGauss<1>(4)};
+      NonMatching::FEValues<dim> cut_values(mapping,
+                                            fe_collection,
+                                            cells,
+                                            lines,
                                             flags,
                                             classifier,
                                             dofs,

@@ -5,9 +5,10 @@
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
 
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/cell_size.h>
-#include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/convective_reinitialization.h>
+#include <levelsinter/level_set/same_cell.h>
 
 #include <algorithm>
 #include <cmath>
@@ -68,18 +69,24 @@ namespace levelsinter
     const double h_solid = std::max(h_min, settings.solid_cell_size);
 
     const QGauss<dim> quadrature(2);
-    FEValues<dim>     fe_values(level_set.fe(),
+    FEValues<dim> fe_values(box_mapping<dim>(),
+                            level_set.fe(),
                             quadrature,
                             update_values | update_gradients |
                               update_JxW_values);
-    FEValues<dim>     velocity_values(velocity.fe(), quadrature, update_values);
+    FEValues<dim> velocity_values(box_mapping<dim>(),
+                                  velocity.fe(),
+                                  quadrature,
+                                  update_values);
     const FEValuesExtractors::Vector velocities(0);
     const QGauss<dim - 1>            face_quadrature(2);
-    FEFaceValues<dim>                face_values(level_set.fe(),
+    FEFaceValues<dim> face_values(box_mapping<dim>(),
+                                  level_set.fe(),
                                   face_quadrature,
                                   update_values | update_normal_vectors |
                                     update_JxW_values);
-    FEFaceValues<dim> velocity_face_values(velocity.fe(),
+    FEFaceValues<dim> velocity_face_values(box_mapping<dim>(),
+                                           velocity.fe(),
                                            face_quadrature,
                                            update_values);
     std::vector<Tensor<1, dim>> v_face(face_quadrature.size());

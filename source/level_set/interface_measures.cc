@@ -6,12 +6,15 @@
 #include <deal.II/fe/mapping_q1.h>
 
 #include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
 
 #include <deal.II/non_matching/fe_values.h>
 #include <deal.II/non_matching/mesh_classifier.h>
 
 #include <deal.II/boost_adaptors/segment.h>
 
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <algorithm>
@@ -84,10 +87,18 @@ namespace levelsinter::interface_measures
     flags.outside = with_points(integrands.atmosphere_flags);
     flags.surface = with_points(integrands.surface_flags);
     const hp::FECollection<dim> fe_collection(level_set.fe());
+    // NonMatching::FEValues builds new FEValues on every cut cell: with
+    // the box mapping their set-up is nearly free.
+    const hp::MappingCollection<dim> mapping(box_mapping<dim>());
     // Three Gauss points per direction integrate the Q1 level set's
-    // implicit surface to far below its interpolation error.
-    NonMatching::FEValues<dim> cut_values(fe_collection,
-                                          QGauss<1>(3),
+    // implicit surface to far below its interpolation error (kept by
+    // reference, as the mapping).
+    const hp::QCollection<dim> cells{QGauss<dim>(3)};
+    const hp::QCollection<1>   lines{QGauss<1>(3)};
+    NonMatching::FEValues<dim> cut_values(mapping,
+                                          fe_collection,
+                                          cells,
+                                          lines,
                                           flags,
                                           classifier,
                                           dofs,

@@ -1,7 +1,6 @@
 #include <deal.II/base/quadrature_lib.h>
 
-#include <deal.II/fe/mapping_q1.h>
-
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/level_set/cell_size.h>
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/level_set/smoothed_heaviside.h>
@@ -43,22 +42,27 @@ namespace levelsinter
     , n_dofs(component.size())
     , inputs(inputs)
     , measure(inputs.alpha.measure())
-    , transition_values(fe, QGauss<dim>(3), cell_flags)
-    , uniform_values(fe, QGauss<dim>(2), cell_flags)
-    , transition_level_set_values(inputs.alpha.fe(),
+    , transition_values(box_mapping<dim>(), fe, QGauss<dim>(3), cell_flags)
+    , uniform_values(box_mapping<dim>(), fe, QGauss<dim>(2), cell_flags)
+    , transition_level_set_values(box_mapping<dim>(),
+                                  inputs.alpha.fe(),
                                   QGauss<dim>(3),
                                   level_set_flags)
-    , uniform_level_set_values(inputs.alpha.fe(),
+    , uniform_level_set_values(box_mapping<dim>(),
+                               inputs.alpha.fe(),
                                QGauss<dim>(2),
                                level_set_flags)
-    , face_values(fe,
+    , face_values(box_mapping<dim>(),
+                  fe,
                   QGauss<dim - 1>(2),
                   update_values | update_normal_vectors | update_JxW_values |
                     update_quadrature_points)
     , fe_collection(fe)
-    , mapping_collection(StaticMappingQ1<dim>::mapping)
+    , mapping_collection(box_mapping<dim>())
     , uncut_quadrature(QGauss<dim>(2))
-    , cut_quadrature(QGauss<1>(3))
+    // 3 points per direction for the extended pressure's volume parts, 2
+    // for the sharp surface alone (both below).
+    , cut_quadrature(QGauss<1>(inputs.extended_pressure ? 3 : 2))
     , vertex_alpha(inputs.alpha.fe().dofs_per_cell)
     , vertex_kappa(inputs.alpha.fe().dofs_per_cell)
   {
@@ -114,13 +118,15 @@ namespace levelsinter
         // 2 points per direction: Q1 test-function gradients vary linearly
         // in a cell, and the geometric error of the Q1 zero level set
         // (O(h^2)) dominates the quadrature error.
-        cut_values =
-          std::make_unique<NonMatching::FEValues<dim>>(fe_collection,
-                                                       QGauss<1>(2),
-                                                       flags,
-                                                       *classifier,
-                                                       inputs.alpha.dof_handler(),
-                                                       inputs.alpha.alpha());
+        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
+          mapping_collection,
+          fe_collection,
+          uncut_quadrature,
+          cut_quadrature,
+          flags,
+          *classifier,
+          inputs.alpha.dof_handler(),
+          inputs.alpha.alpha());
       }
   }
 

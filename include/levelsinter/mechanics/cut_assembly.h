@@ -13,6 +13,7 @@
 #include <deal.II/lac/trilinos_block_sparse_matrix.h>
 #include <deal.II/lac/trilinos_parallel_block_vector.h>
 
+#include <levelsinter/level_set/box_mapping.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/stokes_cell_data.h>
 
@@ -66,7 +67,8 @@ namespace levelsinter
   FEInterfaceValues<dim>
   penalty_face_values(const FiniteElement<dim> &fe)
   {
-    return FEInterfaceValues<dim>(fe,
+    return FEInterfaceValues<dim>(box_mapping<dim>(),
+                                  fe,
                                   QGauss<dim - 1>(2),
                                   update_gradients | update_JxW_values |
                                     update_normal_vectors |

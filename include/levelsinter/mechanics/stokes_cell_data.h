@@ -266,8 +266,8 @@ namespace levelsinter
     // Sharp surface measure only.
     const hp::FECollection<dim>                       fe_collection;
     const hp::MappingCollection<dim>                  mapping_collection;
-    // The extended pressure's rules (NonMatching::FEValues keeps
-    // references to them).
+    // The cut cells' rules (NonMatching::FEValues keeps references to
+    // them).
     const hp::QCollection<dim> uncut_quadrature;
     const hp::QCollection<1>   cut_quadrature;
     // The extended pressure: each phase's pressure shape functions.
