@@ -361,9 +361,9 @@ namespace levelsinter
     const GhostPenaltyAssembler<dim> penalty(ghost_penalty);
     FEInterfaceValues<dim> values = penalty_face_values(finite_element);
     const PhaseCoefficients law = phase_law.coefficients({1, 0});
-    FullMatrix<double>      matrix, schur, part;
-    std::vector<unsigned int>            local;
-    std::vector<types::global_dof_index> global;
+    FullMatrix<double>      matrix, schur, unit, part;
+    std::vector<unsigned int>            local, kept;
+    std::vector<types::global_dof_index> global, kept_global;
     for_each_penalty_face(solid_dofs,
                           settings.band_level,
                           [&](const auto        &cell,
@@ -380,38 +380,49 @@ namespace levelsinter
       reinit_penalty_face(values, cell, f, neighbor, coarser);
       const unsigned int n = values.n_current_interface_dofs();
       const double       h = cell_size(cell);
+      // Each component's penalty is its weight times one matrix, the
+      // products of the jumps of the vertices' Q1 shape functions: every
+      // component lists the face's vertices in the same order among the
+      // interface DoFs. So the face is integrated once, for component 0
+      // at weight 1 (GhostPenaltyAssembler adds -g w [.][.] to `matrix`,
+      // the -C of a pressure, and +g w [.][.] to `schur`).
+      matrix.reinit(n, n);
+      schur.reinit(n, n);
+      penalty.assemble(values, alpha.measure(), 0, 1., matrix, schur);
+      component_interface_dofs(values, finite_element, 0, local, global);
+      unit.reinit(local.size(), local.size());
+      unit.extract_submatrix_from(schur, local, local);
       for (unsigned int c = 0; c <= dim; ++c)
         {
-          // GhostPenaltyAssembler adds -g w [.][.] to `matrix` (the -C of
-          // the pressure) and +g w [.][.] to `schur`: the velocity's
-          // penalty, in A, is the latter.
-          const bool pressure = c == dim;
-          matrix.reinit(n, n);
-          schur.reinit(n, n);
-          penalty.assemble(values,
-                           alpha.measure(),
-                           c,
-                           pressure ? law.a2 * h * h * h / law.a1 : law.a1 * h,
-                           matrix,
-                           schur);
+          // The velocity's penalty goes into A, the pressure's into -C
+          // and the Schur approximation.
+          const bool   pressure = c == dim;
+          const double weight =
+            pressure ? law.a2 * h * h * h / law.a1 : law.a1 * h;
+          component_interface_dofs(values, finite_element, c, local, global);
+          AssertDimension(local.size(), unit.m());
           // The component's DoFs that no constraint removes, the entries
           // the pattern holds (a constrained DoF of a ghost neighbour
           // would add its diagonal to a row this rank has no entry in).
-          component_interface_dofs(values, finite_element, c, local, global);
-          for (unsigned int i = local.size(); i-- > 0;)
-            if (constraints.is_constrained(global[i]))
+          kept.clear();
+          kept_global.clear();
+          for (unsigned int k = 0; k < global.size(); ++k)
+            if (!constraints.is_constrained(global[k]))
               {
-                local.erase(local.begin() + i);
-                global.erase(global.begin() + i);
+                kept.push_back(k);
+                kept_global.push_back(global[k]);
               }
-          part.reinit(local.size(), local.size());
-          part.extract_submatrix_from(pressure ? matrix : schur, local, local);
-          constraints.distribute_local_to_global(part, global, system_matrix);
+          part.reinit(kept.size(), kept.size());
+          part.extract_submatrix_from(unit, kept, kept);
+          part *= pressure ? -weight : weight;
+          constraints.distribute_local_to_global(part,
+                                                 kept_global,
+                                                 system_matrix);
           if (pressure)
             {
-              part.extract_submatrix_from(schur, local, local);
+              part *= -1.;
               constraints.distribute_local_to_global(part,
-                                                     global,
+                                                     kept_global,
                                                      schur_matrix);
             }
         }
