@@ -187,6 +187,21 @@ packing_convergence_test(packing_solid_27 packing_154_coupled_3d.prm
   --reference reference
   --set "Time/CFL number=0.5")
 
+# Steps beyond CFL 1.5 and the scene's cap of 1e-3 s (issue 26; doc/validation.md,
+# "Packings: steps beyond CFL 1.5 and the cap"): the scene as shipped on the
+# 27 spheres, to t = 0.02 s, at CFL 1.5 (the scene) and CFL 3 with a cap of
+# 2e-3 s (an adaptation every step, so that the band holds 1 x 3 + 1
+# cells), against CFL 0.5. Measured (28 Nov 2026, session 26) with 1 rank
+# per case, two cases at a time beside helpers' jobs: about 2.5 h of CPU.
+packing_convergence_test(packing_step_27 packing_154_coupled_3d.prm
+  0.9 3 packing_27_like_154_3d.csv 0.02 0.005,0.01,0.02
+  --case "cfl3_cap2e-3:Time/CFL number=3;Time/Time step=2e-3;Mesh refinement/Adapt interval=1"
+  --case "cfl1.5:Time/CFL number=1.5"
+  --case "reference"
+  --reference reference
+  --ranks 1
+  --set "Time/CFL number=0.5")
+
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
 # settings of packing_154_surface_diffusion_3d.prm to its end time t =
