@@ -204,7 +204,17 @@ namespace levelsinter
     patch.vmult(patch_flux, owned_flux);
 
     // A node whose cells the interface only clips at a corner takes the
-    // carried values of its neighbours instead.
+    // carried values of its neighbours instead. So does every node outside
+    // the solid: its patch, centred off the interface, averages xi over the
+    // interface around it, and in the gap of a concave corner narrower than
+    // the patch (a young neck, whose meniscus is below a cell) those are
+    // the flanks on both sides, not the foot of the corner below it. There
+    // xi changes sign within a cell (the foot fills, the flanks feed it), so
+    // the cut cells at the foot interpolated the foot's value from inside
+    // with the flanks' from outside: the two grains' neck at R/h = 25.6
+    // stalled from t = 0.002 s, its foot moving inwards (doc/validation.md,
+    // "Volume diffusion: the neck's sources"). Carried along N from the
+    // solid's side, the nodes in the gap take the foot's value.
     const double h_min = finest_cell_size(dofs.get_triangulation());
     const double least_support =
       flux_support_fraction * std::pow(h_min, dim - 1);
@@ -212,7 +222,8 @@ namespace levelsinter
     values    = 0;
     for (const auto i : owned)
       if (patch_mass(i) >= least_support &&
-          !level_set.constraints().is_constrained(i))
+          !level_set.constraints().is_constrained(i) &&
+          filter.distance(level_set.alpha()(i)) < 0)
         {
           is_source(i) = 1;
           values(i)    = patch_flux(i) / patch_mass(i);
