@@ -15,6 +15,7 @@ namespace levelsinter
                     const unsigned int                   component,
                     const TrilinosWrappers::MPI::Vector &field,
                     TrilinosWrappers::MPI::Vector       &surface_mass,
+                    std::array<TrilinosWrappers::MPI::Vector, dim> &surface_normal,
                     TrilinosWrappers::MPI::Vector       &flux)
   {
     SolidPressureGradient<dim> pressure_gradient(level_set,
@@ -26,7 +27,8 @@ namespace levelsinter
 
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.solid_flags   = update_gradients | update_JxW_values;
-    integrands.surface_flags = update_values | update_JxW_values;
+    integrands.surface_flags =
+      update_values | update_JxW_values | update_normal_vectors;
     integrands.on_solid = [&](const auto &cell, const FEValues<dim> &solid) {
       const auto &gradients = pressure_gradient.evaluate(cell, solid);
       cell->get_dof_indices(indices);
@@ -45,7 +47,13 @@ namespace levelsinter
           {
             const double JxW = measure.JxW(surface, q);
             for (unsigned int i = 0; i < indices.size(); ++i)
-              surface_mass(indices[i]) += surface.shape_value(i, q) * JxW;
+              {
+                const double value = surface.shape_value(i, q) * JxW;
+                surface_mass(indices[i]) += value;
+                for (unsigned int d = 0; d < dim; ++d)
+                  surface_normal[d](indices[i]) +=
+                    value * surface.normal_vector(q)[d];
+              }
           }
       };
     interface_measures::integrate_regions(level_set, integrands);
@@ -57,6 +65,7 @@ namespace levelsinter
                        const unsigned int,
                        const TrilinosWrappers::MPI::Vector &,
                        TrilinosWrappers::MPI::Vector &,
+                       std::array<TrilinosWrappers::MPI::Vector, 2> &,
                        TrilinosWrappers::MPI::Vector &);
   template void
   add_boundary_flux<3>(const LevelSetField<3> &,
@@ -64,5 +73,6 @@ namespace levelsinter
                        const unsigned int,
                        const TrilinosWrappers::MPI::Vector &,
                        TrilinosWrappers::MPI::Vector &,
+                       std::array<TrilinosWrappers::MPI::Vector, 3> &,
                        TrilinosWrappers::MPI::Vector &);
 } // namespace levelsinter

@@ -6,6 +6,8 @@
 
 #include <levelsinter/level_set/level_set_field.h>
 
+#include <array>
+
 namespace levelsinter
 {
   using namespace dealii;
@@ -34,7 +36,8 @@ namespace levelsinter
    *
    * Accumulated here per node j as the two integrals: @p surface_mass gets
    * int_Gamma phi_j ds and @p flux gets int_S grad p . grad phi_j over the
-   * locally owned cells (ghosted vectors with writable ghosts; the caller
+   * locally owned cells, and @p surface_normal (one vector per axis)
+   * int_Gamma n phi_j ds (ghosted vectors with writable ghosts; the caller
    * compresses with VectorOperation::add and divides where the surface
    * mass is large enough for the quotient to be meaningful). p is
    * component @p component of @p field on @p field_dofs, a DoFHandler on
@@ -47,5 +50,6 @@ namespace levelsinter
                     const unsigned int                   component,
                     const TrilinosWrappers::MPI::Vector &field,
                     TrilinosWrappers::MPI::Vector       &surface_mass,
+                    std::array<TrilinosWrappers::MPI::Vector, dim> &surface_normal,
                     TrilinosWrappers::MPI::Vector       &flux);
 } // namespace levelsinter

@@ -75,8 +75,8 @@ namespace levelsinter
       bool         recovered_gradient = false;
       // xi read on the interface itself as the pressure's boundary flux
       // (add_boundary_flux(), Green's formula for a harmonic p) at the
-      // nodes with interface support, carried along N outwards and along
-      // -N inwards; interior_offset, linear_extrapolation and
+      // solid's nodes with interface support, carried along N outwards and
+      // along -N inwards; interior_offset, linear_extrapolation and
       // recovered_gradient are then not read.
       bool         boundary_flux = false;
       // Normals from the distance filter^-1(alpha) (second order in h).
