@@ -7,7 +7,8 @@ if a check fails.
       every contact's approach rate in RUN/grain_boundaries.csv against the
       two-grain law u = C_gb (P sin(psi/2) - A kappa_root) / G of the radius
       and root curvature it was computed from (BODY_DIM 2: A = 2a, P = 2,
-      G = 2a^3/3; 3: A = pi a^2, P = 2 pi a, G = pi a^4/8).
+      G = 2a^3/3; 3: A = pi a^2, P = 2 pi a, G = pi a^4/8); with the
+      implicit law's damping g_e (contact_damping) u (1 + g_e) is.
   check_grains.py densify RUN MIN_APPROACH MAX_VOLUME_CHANGE MAX_GRAIN_CHANGE
       the grains approach by at least MIN_APPROACH (relative, last row of
       grain_centre_distance_change_mean), |volume_change| and
@@ -85,6 +86,12 @@ if a check fails.
       range and mean of R's, a's (near circles and rays) and d's errors
       and their mean change between consecutive rows (the swing of single
       rows), psi's and the rigid approach rate's range and mean.
+  check_grains.py resting RUN T_FROM [LIMIT]
+      the first contact's rigid approach rate over the steps with time >=
+      T_FROM: its range and mean change between steps (the explicit
+      contact law's period-2 oscillation swings it by +-10 at R/h = 16,
+      doc/numerics.md "Settling: the contact law's step"); LIMIT: fail if
+      |u| exceeds it.
   check_grains.py centroids-row RUN RATIO N [--from T --limit L] [--csv OUT.csv]
       a closed row of N grains: per row, the rigid centres' spacing
       against the exact state's d, the grains' centroids' spacing
@@ -119,7 +126,7 @@ def fail(message):
 
 def law(run, c_gb, ratio, body, tolerance):
     sin_half = math.sqrt(1 - (ratio / 2) ** 2)
-    worst, count = 0.0, 0
+    worst, count, damping = 0.0, 0, 0.0
     for row in rows(run + "/grain_boundaries.csv"):
         u, a, kappa = row["approach_rate"], row["rate_radius"], row["root_curvature"]
         if math.isnan(u):
@@ -128,10 +135,15 @@ def law(run, c_gb, ratio, body, tolerance):
             area, perimeter, g = 2 * a, 2.0, 2 * a ** 3 / 3
         else:
             area, perimeter, g = math.pi * a * a, 2 * math.pi * a, math.pi * a ** 4 / 8
-        expected = c_gb * (perimeter * sin_half - area * kappa) / g
+        # The implicit law's damping (1 + g) G u = C_gb F; 0 for the
+        # explicit law (and in tables written before the column).
+        expected = c_gb * (perimeter * sin_half - area * kappa) / g / (
+            1 + row.get("contact_damping", 0.0))
         worst = max(worst, abs(u - expected) / abs(expected))
+        damping = max(damping, row.get("contact_damping", 0.0))
         count += 1
-    print(f"law: {count} contacts, largest relative deviation {worst:.3g}")
+    print(f"law: {count} contacts, largest relative deviation {worst:.3g}, "
+          f"largest damping {damping:.3g}")
     if count == 0 or worst > tolerance:
         fail(f"approach rate off the law by {worst:.3g} > {tolerance}")
 
@@ -452,6 +464,23 @@ def swing(run, ratio, body, t_from):
            sum(rates) / len(rates), len(table), table[0][1]))
 
 
+def resting(run, t_from, limit=None):
+    rates = {}
+    for row in rows(run + "/grain_boundaries.csv"):
+        if row["time"] >= t_from and math.isfinite(row["approach_rate"]):
+            rates.setdefault(row["step"], row["approach_rate"])
+    rates = [rates[step] for step in sorted(rates)]
+    if len(rates) < 2:
+        fail("fewer than two steps at t >= %g" % t_from)
+    change = sum(abs(y - x) for x, y in zip(rates, rates[1:])) / (len(rates) - 1)
+    largest = max(abs(u) for u in rates)
+    print("resting: approach rate %+.3g to %+.3g, mean change between steps "
+          "%.3g, over %d steps from t = %g" %
+          (min(rates), max(rates), change, len(rates), t_from))
+    if limit is not None and largest > limit:
+        fail("|approach rate| reaches %.3g > %g" % (largest, limit))
+
+
 def row_centroids(run, ratio, grains, out=None, t_from=0, limit=None):
     """A closed row of `grains` grains: per metrics row, the mean over the
     grain boundaries of the rigid centres' distance against the exact
@@ -591,6 +620,9 @@ if __name__ == "__main__":
         angle(args[0], *map(float, args[1:4]))
     elif mode == "swing":
         swing(args[0], float(args[1]), int(args[2]), float(args[3]))
+    elif mode == "resting":
+        resting(args[0], float(args[1]),
+                    float(args[2]) if len(args) > 2 else None)
     elif mode == "centroids-row":
         options = dict(zip(args[3::2], args[4::2]))
         row_centroids(args[0], float(args[1]), int(args[2]),

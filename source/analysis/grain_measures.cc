@@ -285,13 +285,14 @@ namespace levelsinter
         // The approach rate of the last step's contact, and the radius and
         // root curvature it was computed from (at the step's start).
         double rate = nan, root_curvature = nan, rate_radius = nan,
-               explicit_root = nan;
+               explicit_root = nan, damping = nan;
         for (const auto &contact : grains.contacts())
           if (contact.boundary.i == b.i && contact.boundary.j == b.j)
             {
               rate           = contact.approach_rate;
               root_curvature = contact.root_curvature;
               explicit_root  = contact.explicit_root_curvature;
+              damping        = contact.damping;
               rate_radius    = contact.boundary.radius;
               rate_sum += rate;
               ++n_rates;
@@ -367,7 +368,8 @@ namespace levelsinter
                         circle_distance,
                         explicit_root,
                         n_end > 0 ? near_end / n_end : nan,
-                        centroid[b.i].distance(centroid[b.j])});
+                        centroid[b.i].distance(centroid[b.j]),
+                        damping});
       }
     std::vector<double> values = {double(n_grains),
                                   double(nb),
@@ -419,7 +421,8 @@ namespace levelsinter
                                      "fitted_centre_distance",
                                      "root_curvature_explicit",
                                      "fitted_gb_radius",
-                                     "centroid_distance"},
+                                     "centroid_distance",
+                                     "contact_damping"},
             comm,
             kept_rows);
         for (const auto &row : rows)

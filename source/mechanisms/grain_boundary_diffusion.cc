@@ -18,6 +18,9 @@ namespace levelsinter
 {
   namespace
   {
+    // The sums kernel_sums() returns per grain boundary.
+    constexpr unsigned int n_sums = 5;
+
     // The solution of matrix x = rhs with no component in the matrix's
     // null space (singular values below 1e-10 of the largest count as
     // zero), by the singular-value decomposition.
@@ -99,17 +102,18 @@ namespace levelsinter
   {
     // Per boundary, over the discrete interface: the deposition's volume
     // rate per unit speed, int I_h(w N) . n (W), int I_h(w kappa) (with
-    // @p geometry's N and kappa), int I_h(w) and, with
-    // @p explicit_curvature, int I_h(w) (div N + mu); one pass for all.
+    // @p geometry's N and kappa), int I_h(w), with @p explicit_curvature
+    // int I_h(w) (div N + mu), and with @p geometry int |grad_s I_h(w)|^2
+    // (the implicit contact law's stiffness); one pass for all.
     const unsigned int  nb = boundaries.size();
-    std::vector<double> sums(4 * nb, 0.);
+    std::vector<double> sums(n_sums * nb, 0.);
     std::vector<types::global_dof_index> indices(alpha.fe().n_dofs_per_cell());
     std::vector<double>                  w(indices.size()), curvature;
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.surface_flags =
       update_values | update_JxW_values | update_normal_vectors |
-      (explicit_curvature ? update_gradients | update_quadrature_points :
-                            update_default);
+      (geometry ? update_gradients : update_default) |
+      (explicit_curvature ? update_quadrature_points : update_default);
     integrands.on_surface = [&](const auto &cell, const auto &values) {
       // Q1: the cell's dofs are its vertices, in order.
       cell->get_dof_indices(indices);
@@ -145,7 +149,7 @@ namespace levelsinter
           for (const unsigned int q : values.quadrature_point_indices())
             {
               double         weight = 0, weighted_kappa = 0;
-              Tensor<1, dim> weighted_normal;
+              Tensor<1, dim> weighted_normal, weight_gradient;
               for (unsigned int v = 0; v < indices.size(); ++v)
                 {
                   const double phi = values.shape_value(v, q) * w[v];
@@ -156,14 +160,18 @@ namespace levelsinter
                       for (unsigned int c = 0; c < dim; ++c)
                         weighted_normal[c] +=
                           phi * geometry->nodal_normals()[c](indices[v]);
+                      weight_gradient += w[v] * values.shape_grad(v, q);
                     }
                 }
               const double JxW = alpha.measure().JxW(values, q);
-              sums[4 * b] += weighted_normal * values.normal_vector(q) * JxW;
-              sums[4 * b + 1] += weighted_kappa * JxW;
-              sums[4 * b + 2] += weight * JxW;
+              const auto  &n   = values.normal_vector(q);
+              sums[n_sums * b] += weighted_normal * n * JxW;
+              sums[n_sums * b + 1] += weighted_kappa * JxW;
+              sums[n_sums * b + 2] += weight * JxW;
               if (explicit_curvature)
-                sums[4 * b + 3] += weight * curvature[q] * JxW;
+                sums[n_sums * b + 3] += weight * curvature[q] * JxW;
+              weight_gradient -= (weight_gradient * n) * n;
+              sums[n_sums * b + 4] += weight_gradient.norm_square() * JxW;
             }
         }
     };
@@ -232,10 +240,10 @@ namespace levelsinter
     const auto          sums = kernel_sums(alpha, nullptr, kink);
     std::vector<double> scale(boundaries.size(), 0.);
     for (unsigned int b = 0; b < boundaries.size(); ++b)
-      if (sums[4 * b + 2] > 0)
+      if (sums[n_sums * b + 2] > 0)
         scale[b] = parameters.triple_line_turning() *
                    boundaries[b].perimeter * boundaries[b].area_in_domain /
-                   boundaries[b].area / sums[4 * b + 2];
+                   boundaries[b].area / sums[n_sums * b + 2];
     // Every cell holding a node sees the same kernels there
     // (kernel_weights' reach), so each writes the same sum.
     mu = 0;
@@ -262,7 +270,8 @@ namespace levelsinter
 
   template <int dim>
   void
-  GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha)
+  GrainBoundaryDiffusion<dim>::compute(const LevelSetField<dim> &alpha,
+                                       const double              dt)
   {
     TimerOutput::Scope scope(timer, "grain-boundary diffusion");
     // The volumes balance_volumes() keeps: those of t = 0.
@@ -285,16 +294,19 @@ namespace levelsinter
     last_contacts.clear();
     std::vector<double> deposition_weight;
     for (unsigned int b = 0; b < nb; ++b)
-      if (sums[4 * b] > 0 && sums[4 * b + 2] > 0)
+      if (const double *sum = &sums[n_sums * b]; sum[0] > 0 && sum[2] > 0)
         {
           Contact contact;
           contact.boundary       = boundaries[b];
-          contact.root_curvature = sums[4 * b + 1] / sums[4 * b + 2];
+          contact.root_curvature = sum[1] / sum[2];
           if (read_explicit)
-            contact.explicit_root_curvature =
-              sums[4 * b + 3] / sums[4 * b + 2];
+            contact.explicit_root_curvature = sum[3] / sum[2];
+          if (parameters.implicit_contact)
+            contact.damping =
+              mobility * contact_stiffness(boundaries[b], sum, dt) * dt /
+              boundaries[b].resistance;
           last_contacts.push_back(contact);
-          deposition_weight.push_back(sums[4 * b]);
+          deposition_weight.push_back(sum[0]);
         }
     solve_grain_velocities();
 
@@ -315,6 +327,29 @@ namespace levelsinter
   }
 
   template <int dim>
+  double
+  GrainBoundaryDiffusion<dim>::contact_stiffness(
+    const grain_geometry::GrainBoundary<dim> &boundary,
+    const double                             *sum,
+    const double                              dt) const
+  {
+    // An approach delta deposits the normal displacement eta = delta
+    // (A_dom / W) w at the triple line (add_nodal_velocity()); on the
+    // surface it changes the curvature by -Delta_s eta, whose kernel mean,
+    // after one integration by parts, raises kappa_root by delta (A_dom /
+    // W) int |grad_s w|^2 / int w, and lowers F = P sin(psi/2) - A
+    // kappa_root by A times that. Surface diffusion spreads the bump
+    // within the step over (C_s dt)^(1/4) (doc/numerics.md, "Settling:
+    // the contact law's step"): a bump of width L > l has the curvature
+    // (l / L)^3 of the kernel's.
+    const double l = deposition_width;
+    const double L =
+      std::max(l, std::pow(surface_diffusion.coefficient() * dt, 0.25));
+    return boundary.area * boundary.area_in_domain / sum[0] * sum[4] /
+           sum[2] * std::pow(l / L, 3);
+  }
+
+  template <int dim>
   void
   GrainBoundaryDiffusion<dim>::solve_grain_velocities()
   {
@@ -323,7 +358,10 @@ namespace levelsinter
     if (last_contacts.empty())
       return;
     // In units gamma_s = C_gb = 1: K_ij = G(a), F_ij = P sin(psi/2) -
-    // A kappa_root; V scales with C_gb (the mobility).
+    // A kappa_root; V scales with C_gb (the mobility). The implicit law
+    // reads F after the step's approach, F - S u dt: the approach's
+    // resistance becomes G (1 + g), g = C_gb S dt / G (the contact's
+    // damping), sliding keeps G.
     LAPACKFullMatrix<double> matrix(dim * n, dim * n);
     dealii::Vector<double>   rhs(dim * n);
     const double             sin_half = parameters.sin_half_dihedral_angle();
@@ -339,7 +377,8 @@ namespace levelsinter
             for (unsigned int q = 0; q < dim; ++q)
               {
                 const double B =
-                  K * (m[p] * m[q] + beta * ((p == q) - m[p] * m[q]));
+                  K * ((1 + contact.damping) * m[p] * m[q] +
+                       beta * ((p == q) - m[p] * m[q]));
                 matrix(b.i * dim + p, b.i * dim + q) += B;
                 matrix(b.j * dim + p, b.j * dim + q) += B;
                 matrix(b.i * dim + p, b.j * dim + q) -= B;
@@ -416,7 +455,7 @@ namespace levelsinter
                                             const double        dt,
                                             VelocityField<dim> &velocity)
   {
-    compute(alpha);
+    compute(alpha, dt);
     trial_dt = dt;
     add_nodal_velocity(alpha, velocity);
   }
@@ -428,7 +467,8 @@ namespace levelsinter
     const double,
     VelocityField<dim> &velocity)
   {
-    compute(alpha);
+    // The step is not known yet: the implicit law takes the last one's.
+    compute(alpha, trial_dt);
     add_nodal_velocity(alpha, velocity);
   }
 

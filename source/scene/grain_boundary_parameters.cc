@@ -77,6 +77,16 @@ namespace levelsinter
                         "boundaries move by what surface diffusion and the "
                         "deposition carry across them (doc/numerics.md, "
                         "\"Volume per grain\").");
+      prm.declare_entry("Implicit contact law",
+                        "false",
+                        Patterns::Bool(),
+                        "The contact law reads the neck-root curvature "
+                        "after the step's deposition (backward Euler in "
+                        "the approach): the coupled step is stable for any "
+                        "time step, where the explicit law oscillates "
+                        "from step to step once the time step exceeds "
+                        "about C_gb dt / (a l^3) ~ 1 (doc/numerics.md, "
+                        "\"Settling: the implicit contact law\").");
     }
     prm.leave_subsection();
   }
@@ -93,6 +103,7 @@ namespace levelsinter
     triple_line        = prm.get_bool("Triple-line condition");
     kink_width         = prm.get_double("Triple-line kink width");
     conserve_volumes   = prm.get_bool("Conserve grain volumes");
+    implicit_contact   = prm.get_bool("Implicit contact law");
     prm.leave_subsection();
     if (!enabled)
       return;

@@ -99,6 +99,10 @@ namespace levelsinter
       double explicit_root_curvature = std::numeric_limits<double>::quiet_NaN();
       // u = (V_i - V_j) . n, positive when the grains approach.
       double approach_rate = 0;
+      // With the implicit contact law, g = C_gb S dt / G: the law is (1 +
+      // g) G u = C_gb F (doc/numerics.md, "Settling: the implicit contact
+      // law"); 0 for the explicit law.
+      double damping = 0;
     };
 
     const std::vector<Contact> &
@@ -159,10 +163,18 @@ namespace levelsinter
                 const bool                       kink               = false,
                 const bool                       explicit_curvature = false) const;
 
-    // Grain boundaries, root curvatures and the trial velocities from the
-    // level set and the accepted centres.
+    // Grain boundaries, root curvatures and the trial velocities of a step
+    // @p dt from the level set and the accepted centres.
     void
-    compute(const LevelSetField<dim> &alpha);
+    compute(const LevelSetField<dim> &alpha, const double dt);
+
+    // S = dF/d(delta): how much the approach delta = u dt of a step,
+    // deposited at the triple line, lowers the driving force F of
+    // @p boundary, from its kernel_sums() @p sum.
+    double
+    contact_stiffness(const grain_geometry::GrainBoundary<dim> &boundary,
+                      const double                             *sum,
+                      const double                              dt) const;
 
     // V_i from the balance of all grains (the contact laws of contacts),
     // the minimum-norm solution (SVD) so that each cluster's rigid

@@ -45,5 +45,6 @@ namespace levelsinter
     bool   triple_line        = false; // the dihedral angle in surface diffusion
     double kink_width         = 0; // its kink across the plane, finest cells
     bool   conserve_volumes   = false; // planes moved to keep each grain's volume
+    bool   implicit_contact   = false; // the contact law implicit in the approach
   };
 } // namespace levelsinter
