@@ -561,13 +561,16 @@ add_test(NAME surface_diffusion_mullins_sphere_3d COMMAND ${SD_VALIDATE}
 # Two spheres at h = 1/40 (R/h = 8), 4 steps, on 1 and 2 ranks: the
 # geometry must not depend on the partition.
 # FGMRES stops at a relative 1e-8 with an AMG that depends on the
-# partition: neck, volume and area agree to 2.1e-8 (measured); checked at
-# 1e-7. max_velocity (the largest nodal speed) differs by up to 4 % in the
-# same runs while the interface agrees: where it is reached is not traced,
+# partition: neck, volume and area agreed to 2.1e-8 with MappingQ1 and
+# agree to 1.2e-7 (the neck at step 4; the curvature 3.6e-8) with the box
+# mapping (28 Nov 2026: another round-off, another AMG path on one of the
+# partitions); checked at 3e-7, 2.5x the measured. max_velocity (the
+# largest nodal speed) differs by up to 4 % in the same runs while the
+# interface agrees: where it is reached is not traced,
 # so it is not compared; nor are times, iterations and mesh counts.
 # centre_distance_change is, like volume_change, a difference of nearly
 # equal numbers (5e-6 here): centre_distance is compared instead.
-ranks_agree(surface_diffusion_3d sd_3d ${GRAINS_3D} 1e-7
+ranks_agree(surface_diffusion_3d sd_3d ${GRAINS_3D} 3e-7
   "surface_diffusion_iterations;transport_iterations;cells;dofs;volume_change;max_velocity;centre_distance_change"
   --set "Mesh refinement/Maximum level=2"
   --set "Level set/Filter thickness=0.15" --set "Mesh refinement/Band width=0.1"

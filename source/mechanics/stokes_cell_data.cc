@@ -72,12 +72,18 @@ namespace levelsinter
         vertex_of.push_back(fe.system_to_component_index(i).second);
       }
     if (inputs.extended_pressure)
+      for (const unsigned int i : pressure_dofs)
+        phase_pressure_dofs[component[i] - dim].push_back(i);
+    if (!inputs.extended_pressure && inputs.surface != SurfaceMeasure::sharp)
+      return;
+    classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
+      inputs.alpha.dof_handler(), inputs.alpha.alpha());
+    classifier->reclassify();
+    NonMatching::RegionUpdateFlags flags;
+    flags.surface = update_values | update_gradients | update_JxW_values |
+                    update_normal_vectors | update_quadrature_points;
+    if (inputs.extended_pressure)
       {
-        for (const unsigned int i : pressure_dofs)
-          phase_pressure_dofs[component[i] - dim].push_back(i);
-        classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
-          inputs.alpha.dof_handler(), inputs.alpha.alpha());
-        classifier->reclassify();
         // 3 points per direction as below; the fitted weights sit on the
         // transition rule's points.
         if (!measure.is_axisymmetric())
@@ -86,48 +92,28 @@ namespace levelsinter
               inputs.alpha.dof_handler(), inputs.alpha.alpha(), 3);
             return;
           }
-        NonMatching::RegionUpdateFlags flags;
-        flags.inside  = cell_flags;
-        flags.outside = cell_flags;
-        flags.surface = update_values | update_gradients | update_JxW_values |
-                        update_normal_vectors | update_quadrature_points;
         // Uncut cells: 2 Gauss points per direction, exact for the Q1
         // products as in reinit(). Cut cells: the generated rules on
         // {alpha_h < 0} and {alpha_h > 0} from 3 points per direction, so
         // that the two parts add up to the cell's integral of the
         // velocity terms to round-off and the pressure terms see a
         // well-resolved part.
-        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
-          mapping_collection,
-          fe_collection,
-          uncut_quadrature,
-          cut_quadrature,
-          flags,
-          *classifier,
-          inputs.alpha.dof_handler(),
-          inputs.alpha.alpha());
+        flags.inside  = cell_flags;
+        flags.outside = cell_flags;
       }
-    else if (inputs.surface == SurfaceMeasure::sharp)
-      {
-        classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
-          inputs.alpha.dof_handler(), inputs.alpha.alpha());
-        classifier->reclassify();
-        NonMatching::RegionUpdateFlags flags;
-        flags.surface = update_values | update_gradients | update_JxW_values |
-                        update_normal_vectors | update_quadrature_points;
-        // 2 points per direction: Q1 test-function gradients vary linearly
-        // in a cell, and the geometric error of the Q1 zero level set
-        // (O(h^2)) dominates the quadrature error.
-        cut_values = std::make_unique<NonMatching::FEValues<dim>>(
-          mapping_collection,
-          fe_collection,
-          uncut_quadrature,
-          cut_quadrature,
-          flags,
-          *classifier,
-          inputs.alpha.dof_handler(),
-          inputs.alpha.alpha());
-      }
+    // The sharp surface alone: 2 points per direction (cut_quadrature), as
+    // Q1 test-function gradients vary linearly in a cell and the geometric
+    // error of the Q1 zero level set (O(h^2)) dominates the quadrature
+    // error.
+    cut_values =
+      std::make_unique<NonMatching::FEValues<dim>>(mapping_collection,
+                                                   fe_collection,
+                                                   uncut_quadrature,
+                                                   cut_quadrature,
+                                                   flags,
+                                                   *classifier,
+                                                   inputs.alpha.dof_handler(),
+                                                   inputs.alpha.alpha());
   }
 
   template <int dim>
