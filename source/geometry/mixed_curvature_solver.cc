@@ -162,8 +162,6 @@ namespace levelsinter
     const auto    &dofs  = level_set.dof_handler();
     const MPI_Comm comm  = dofs.get_communicator();
     const auto    &owned = level_set.locally_owned();
-    for (auto *m : {&kk, &kv, &vk, &vv, &tangential_shift, &isotropic_shift})
-      m->reinit(level_set.sparsity_pattern());
     rhs.reinit(owned, comm);
     kappa.reinit(owned, level_set.locally_relevant(), comm);
     velocity.reinit(owned, level_set.locally_relevant(), comm);
@@ -183,8 +181,11 @@ namespace levelsinter
                                          filter,
                                          settings.normals_from_distance,
                                          settings.symmetry_boundaries);
+    // The blocks live from here to the end of the solve: between steps
+    // they would sit beside the elastic problem's matrices and AMG, whose
+    // solve sets the coupled packings' peak memory.
     for (auto *m : {&kk, &kv, &vk, &vv})
-      *m = 0;
+      m->reinit(level_set.sparsity_pattern());
     rhs = 0;
 
     const bool   coupled = settings.coupled && dt > 0;
@@ -347,6 +348,8 @@ namespace levelsinter
       iterations = solve_coupled(level_set, std::sqrt(coefficient / dt));
     else
       iterations = solve_decoupled(level_set);
+    for (auto *m : {&kk, &kv, &vk, &vv})
+      m->clear();
     solve_cpu_time = cpu_timer.cpu_time();
     return iterations;
   }
@@ -363,7 +366,10 @@ namespace levelsinter
     block_rhs.block(0) = rhs;
 
     // M + b L and M + b K_A from the blocks (kv holds -b K_A, vk b L), on
-    // the same pattern; identity rows outside the band come from M.
+    // the same pattern; identity rows outside the band come from M. Built
+    // here and dropped after the solve: kept between steps, they held 2 of
+    // the 6 matrices the solver kept beside the other solvers' peaks.
+    SparseMatrix tangential_shift, isotropic_shift;
     tangential_shift.copy_from(kk);
     tangential_shift.add(1., vk);
     isotropic_shift.copy_from(kk);

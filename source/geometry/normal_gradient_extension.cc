@@ -65,7 +65,6 @@ namespace levelsinter
   void
   NormalGradientExtension<dim>::setup(const LevelSetField<dim> &level_set)
   {
-    matrix.reinit(level_set.sparsity_pattern());
     xi.reinit(level_set.locally_owned(),
               level_set.locally_relevant(),
               level_set.dof_handler().get_communicator());
@@ -354,7 +353,9 @@ namespace levelsinter
   {
     const auto    &dofs = level_set.dof_handler();
     const MPI_Comm comm = dofs.get_communicator();
-    matrix              = 0;
+    // The matrix and its ILU live for one carry() (released at its end),
+    // not beside the elastic problem's matrices and AMG at the next solve.
+    matrix.reinit(level_set.sparsity_pattern());
     // Per node: the band cells and all cells at it. Nodes that no band cell
     // touches keep xi = 0 (identity rows).
     Vector touched, cells;
@@ -496,6 +497,8 @@ namespace levelsinter
         iterations += control.last_step();
         level_set.constraints().distribute(solutions.back());
       }
+    preconditioner.clear();
+    matrix.clear();
     return iterations;
   }
 

@@ -33,7 +33,6 @@ namespace levelsinter
   ConvectiveReinitialization<dim>::setup_system(
     const LevelSetField<dim> &level_set)
   {
-    matrix.reinit(level_set.sparsity_pattern());
     h_min = finest_cell_size(level_set.dof_handler().get_triangulation());
   }
 
@@ -47,8 +46,11 @@ namespace levelsinter
     TrilinosWrappers::MPI::Vector &rhs)
   {
     TimerOutput::Scope scope(timer, "level set: assembly");
-    matrix = 0;
-    rhs    = 0;
+    // The matrix and its ILU live for one advance() (released at its end):
+    // kept between steps, they sat beside the elastic problem's, whose
+    // solve sets the coupled packings' peak memory.
+    matrix.reinit(level_set.sparsity_pattern());
+    rhs = 0;
 
     // lambda = h / dt with the finest h everywhere: the reinitialisation
     // then moves alpha by at most h_min per step in every cell, and the
@@ -275,6 +277,8 @@ namespace levelsinter
     for (const auto i : level_set.locally_owned())
       solution[i] = std::clamp(double(solution[i]), -s, s);
     level_set.set_from_owned(solution);
+    preconditioner.clear();
+    matrix.clear();
     return control.last_step();
   }
 

@@ -14,6 +14,7 @@
 #include <levelsinter/mechanics/cut_assembly.h>
 #include <levelsinter/mechanics/extended_pressure_stokes.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/schur_layout.h>
 #include <levelsinter/mechanics/solid_elastic_stokes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/stokes_terms.h>
@@ -88,25 +89,19 @@ namespace levelsinter
     // faces of the ghost penalty couple each pressure with itself across
     // them (for_each_penalty_face()).
     const unsigned int           n = dim + 2;
-    Table<2, DoFTools::Coupling> cells(n, n), schur_cells(n, n);
+    Table<2, DoFTools::Coupling> cells(n, n);
     for (unsigned int c = 0; c < n; ++c)
       for (unsigned int d = 0; d < n; ++d)
-        {
-          const bool pressures = c >= dim && d >= dim;
-          cells[c][d] =
-            pressures && c != d ? DoFTools::none : DoFTools::always;
-          schur_cells[c][d] =
-            pressures && c == d ? DoFTools::always : DoFTools::none;
-        }
+        cells[c][d] = c >= dim && d >= dim && c != d ? DoFTools::none :
+                                                        DoFTools::always;
     const MPI_Comm comm = dofs.get_communicator();
     std::vector<types::global_dof_index> cell_dofs(
       finite_element.dofs_per_cell),
       neighbor_dofs(finite_element.dofs_per_cell), pair;
-    const auto make = [&](const Table<2, DoFTools::Coupling> &coupling,
-                          TrilinosWrappers::BlockSparseMatrix &matrix) {
+    {
       BlockDynamicSparsityPattern dsp(relevant_partitioning);
       DoFTools::make_sparsity_pattern(dofs,
-                                      coupling,
+                                      cells,
                                       dsp,
                                       constraints,
                                       false,
@@ -136,10 +131,13 @@ namespace levelsinter
                                                  owned,
                                                  comm,
                                                  relevant_dofs);
-      matrix.reinit(owned_partitioning, dsp, comm);
-    };
-    make(cells, system_matrix);
-    make(schur_cells, schur_matrix);
+      system_matrix.reinit(owned_partitioning, dsp, comm);
+    }
+    make_schur_layout(system_matrix,
+                      owned_partitioning,
+                      relevant_partitioning,
+                      constraints,
+                      schur_matrix);
     system_rhs.reinit(owned_partitioning, comm);
     ghosted_solution.reinit(owned_partitioning, relevant_partitioning, comm);
     old_displacement.reinit(owned_partitioning, relevant_partitioning, comm);

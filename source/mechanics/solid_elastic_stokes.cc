@@ -19,6 +19,7 @@
 #include <levelsinter/level_set/same_cell.h>
 #include <levelsinter/mechanics/cut_assembly.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/schur_layout.h>
 #include <levelsinter/mechanics/solid_elastic_stokes.h>
 #include <levelsinter/mechanics/stokes_assemblers.h>
 #include <levelsinter/mechanics/stokes_terms.h>
@@ -168,6 +169,11 @@ namespace levelsinter
     constraints.close();
     velocity_modes = rigid_body_modes(solid_dofs, owned_partitioning[0]);
 
+    // The old matrices go first: the new pattern and matrix do not have to
+    // fit in memory beside them.
+    system_matrix.clear();
+    schur_matrix.clear();
+
     // Cells couple everything (eps:eps all velocity components, div, ASGS);
     // the ghost-penalty faces couple each component with itself across
     // them, on the DoFs no constraint removes (assemble_ghost_penalty()).
@@ -177,16 +183,8 @@ namespace levelsinter
     // component on a regular face, against 16 x 16 through
     // add_entries_local_to_global(), which was two thirds of this set-up:
     // doc/performance.md, "Session 25").
-    const unsigned int           n_c = dim + 1;
-    Table<2, DoFTools::Coupling> cells(n_c, n_c), schur_cells(n_c, n_c);
-    for (unsigned int c = 0; c < n_c; ++c)
-      for (unsigned int d = 0; d < n_c; ++d)
-        {
-          cells[c][d]       = DoFTools::always;
-          schur_cells[c][d] = c == dim && d == dim ? DoFTools::always :
-                                                      DoFTools::none;
-        }
-    const MPI_Comm comm = solid_dofs.get_communicator();
+    const unsigned int n_c  = dim + 1;
+    const MPI_Comm     comm = solid_dofs.get_communicator();
     std::vector<types::global_dof_index> cell_dofs(
       finite_element.dofs_per_cell),
       neighbor_dofs(finite_element.dofs_per_cell), own, other;
@@ -204,12 +202,9 @@ namespace levelsinter
           result.push_back(dofs[i]);
       std::sort(result.begin(), result.end());
     };
-    const auto make = [&](const Table<2, DoFTools::Coupling> &coupling,
-                          const unsigned int first_component,
-                          TrilinosWrappers::BlockSparseMatrix &matrix) {
+    {
       BlockDynamicSparsityPattern dsp(relevant_partitioning);
       DoFTools::make_sparsity_pattern(solid_dofs,
-                                      coupling,
                                       dsp,
                                       constraints,
                                       false,
@@ -225,7 +220,7 @@ namespace levelsinter
           return;
         cell->get_dof_indices(cell_dofs);
         neighbor->get_dof_indices(neighbor_dofs);
-        for (unsigned int c = first_component; c < n_c; ++c)
+        for (unsigned int c = 0; c < n_c; ++c)
           if (neighbor->is_locally_owned())
             {
               only_in(cell_dofs, neighbor_dofs, c, own);
@@ -247,10 +242,13 @@ namespace levelsinter
             }
       });
       SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
-      matrix.reinit(owned_partitioning, dsp, comm);
-    };
-    make(cells, 0, system_matrix);
-    make(schur_cells, dim, schur_matrix);
+      system_matrix.reinit(owned_partitioning, dsp, comm);
+    }
+    make_schur_layout(system_matrix,
+                      owned_partitioning,
+                      relevant_partitioning,
+                      constraints,
+                      schur_matrix);
     system_rhs.reinit(owned_partitioning, comm);
     solid_solution.reinit(owned_partitioning, relevant_partitioning, comm);
     solid_displacement.reinit(owned_partitioning, relevant_partitioning, comm);

@@ -16,6 +16,7 @@
 #include <levelsinter/level_set/smoothed_heaviside.h>
 #include <levelsinter/mechanics/free_rigid_motion.h>
 #include <levelsinter/mechanics/rigid_body_modes.h>
+#include <levelsinter/mechanics/schur_layout.h>
 #include <levelsinter/mechanics/stokes_terms.h>
 #include <levelsinter/mechanics/two_phase_stokes.h>
 
@@ -113,20 +114,11 @@ namespace levelsinter
                                                    comm,
                                                    relevant_dofs);
         system_matrix.reinit(owned_partitioning, dsp, comm);
-
-        Table<2, DoFTools::Coupling> coupling(dim + 1, dim + 1);
-        for (unsigned int c = 0; c < dim + 1; ++c)
-          for (unsigned int d = 0; d < dim + 1; ++d)
-            coupling[c][d] =
-              (c == dim && d == dim) ? DoFTools::always : DoFTools::none;
-        BlockDynamicSparsityPattern schur_dsp(relevant_partitioning);
-        DoFTools::make_sparsity_pattern(
-          dofs, coupling, schur_dsp, constraints, false);
-        SparsityTools::distribute_sparsity_pattern(schur_dsp,
-                                                   owned_dofs,
-                                                   comm,
-                                                   relevant_dofs);
-        schur_matrix.reinit(owned_partitioning, schur_dsp, comm);
+        make_schur_layout(system_matrix,
+                          owned_partitioning,
+                          relevant_partitioning,
+                          constraints,
+                          schur_matrix);
       }
     system_rhs.reinit(owned_partitioning, comm);
     ghosted_solution.reinit(owned_partitioning, relevant_partitioning, comm);

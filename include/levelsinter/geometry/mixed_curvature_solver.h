@@ -159,10 +159,9 @@ namespace levelsinter
     const Settings       settings;
     TimerOutput         &timer;
 
-    // Blocks of the (scaled) system, rows (kappa, v_s), and the factors
-    // M + b L, M + b K_A of the Schur-complement approximation.
-    TrilinosWrappers::SparseMatrix kk, kv, vk, vv, tangential_shift,
-      isotropic_shift;
+    // Blocks of the (scaled) system, rows (kappa, v_s); empty between
+    // solves.
+    TrilinosWrappers::SparseMatrix kk, kv, vk, vv;
     Vector                         rhs;
     Vector                         kappa;
     Vector                         velocity;

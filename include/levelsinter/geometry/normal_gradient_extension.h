@@ -91,7 +91,7 @@ namespace levelsinter
                             const Settings       &settings,
                             TimerOutput          &timer);
 
-    /** Size the matrix for the level set's DoFs; after each remesh. */
+    /** Size xi for the level set's DoFs; after each remesh. */
     void
     setup(const LevelSetField<dim> &level_set);
 

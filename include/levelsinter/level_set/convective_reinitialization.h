@@ -60,7 +60,7 @@ namespace levelsinter
                                const Settings       &settings,
                                TimerOutput          &timer);
 
-    /** Size the matrix for the level set's current DoFs; after each remesh. */
+    /** Take the finest cell size of the current mesh; after each remesh. */
     void
     setup_system(const LevelSetField<dim> &level_set);
 
