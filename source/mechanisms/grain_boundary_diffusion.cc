@@ -564,8 +564,8 @@ namespace levelsinter
                        "triple line no longer meets the interface; last "
                        "approach rate "
                     << rate
-                    << "): the two grains now move by their other contacts "
-                       "only"
+                    << "): no contact law acts between the two grains any "
+                       "more"
                     << std::endl;
     accepted_contacts = std::move(current);
   }
