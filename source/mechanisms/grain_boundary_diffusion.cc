@@ -280,6 +280,7 @@ namespace levelsinter
     if (!boundaries_current)
       find_boundaries(alpha);
     boundaries_current = false;
+    check_representable();
     // With the sharp condition the explicit curvature is measured too (its
     // potential mu is that of this state: triple_line_potential() ran
     // before the surface-diffusion solve).
@@ -323,6 +324,62 @@ namespace levelsinter
         max_speed = std::max({max_speed,
                               std::abs(contact.approach_rate),
                               std::abs(deposition_speed.back())});
+      }
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::check_representable() const
+  {
+    const double sin_half = parameters.sin_half_dihedral_angle();
+    for (const auto &b : boundaries)
+      {
+        // Two grains of radius r end as truncated discs or spheres meeting
+        // in a grain boundary of radius about r sin(psi/2). The triple
+        // line's kernels (deposition, root curvature) have the half-width
+        // l: a neck narrower than l is not resolved, and the contact law
+        // then cycles between a neck that snaps open and one that narrows
+        // (measured at gamma_gb / gamma_s = 1.9, R/h = 16: doc/validation.md,
+        // "Settling the pair: the step's accuracy, clear stops").
+        const double r = std::min(radii[b.i], radii[b.j]);
+        if (r * sin_half < deposition_width)
+          {
+            std::ostringstream message;
+            message << "grains " << b.i << " and " << b.j
+                    << ": at Grain boundaries/Energy ratio = "
+                    << parameters.energy_ratio
+                    << " their equilibrium grain boundary has the radius r "
+                       "sin(psi/2) = "
+                    << r * sin_half << " (r = " << r
+                    << "), less than the triple line's kernel half-width "
+                       "l = Deposition width x h_min = "
+                    << deposition_width
+                    << ", so the neck cannot be resolved: refine the mesh "
+                       "(Mesh refinement/Maximum level), lower the Deposition "
+                       "width or the Energy ratio";
+            throw std::runtime_error(message.str());
+          }
+        // The power partition of rigid grains needs each grain's centre in
+        // its own cell: a grain boundary at a centre means a grain being
+        // swallowed, or two grains merged into one (gamma_gb -> 0, d ->
+        // 0), which this split cannot represent.
+        const double reach[2] = {(b.origin - centre[b.i]) * b.normal,
+                                 (centre[b.j] - b.origin) * b.normal};
+        for (unsigned int side = 0; side < 2; ++side)
+          if (reach[side] < h_min)
+            {
+              std::ostringstream message;
+              message << "grains " << b.i << " and " << b.j
+                      << ": their grain boundary is " << reach[side]
+                      << " from the centre of grain "
+                      << (side == 0 ? b.i : b.j) << ", less than a finest cell "
+                      << h_min << " (centre distance " << b.centre_distance
+                      << "): the grain is being swallowed or the two have "
+                         "merged into one, which rigid grains split by power "
+                         "cells cannot represent (doc/numerics.md, \"Grain "
+                         "boundaries and densification\")";
+              throw std::runtime_error(message.str());
+            }
       }
   }
 
@@ -451,12 +508,13 @@ namespace levelsinter
   template <int dim>
   void
   GrainBoundaryDiffusion<dim>::add_velocity(const LevelSetField<dim> &alpha,
-                                            const double,
+                                            const double        t,
                                             const double        dt,
                                             VelocityField<dim> &velocity)
   {
     compute(alpha, dt);
-    trial_dt = dt;
+    trial_dt       = dt;
+    trial_start_time = t;
     add_nodal_velocity(alpha, velocity);
   }
 
@@ -480,6 +538,36 @@ namespace levelsinter
       centre[i] += trial_dt * trial_velocity[i];
     if (parameters.conserve_volumes)
       balance_volumes(alpha);
+    report_lost_contacts(alpha);
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::report_lost_contacts(
+    const LevelSetField<dim> &alpha)
+  {
+    std::map<std::pair<unsigned int, unsigned int>, double> current;
+    for (const auto &contact : last_contacts)
+      current[{contact.boundary.i, contact.boundary.j}] =
+        contact.approach_rate;
+    // The contacts are those of the state at the step's start, the same on
+    // every rank; rank 0 says which were lost.
+    if (Utilities::MPI::this_mpi_process(
+          alpha.dof_handler().get_communicator()) == 0)
+      for (const auto &[pair, rate] : accepted_contacts)
+        if (current.count(pair) == 0)
+          std::cout << "note: t = " << trial_start_time
+                    << ": the grain boundary of grains " << pair.first
+                    << " and " << pair.second
+                    << " is gone (its grains are more than 10 % beyond "
+                       "touching, its plane no longer meets the solid, or its "
+                       "triple line no longer meets the interface; last "
+                       "approach rate "
+                    << rate
+                    << "): no contact law acts between the two grains any "
+                       "more"
+                    << std::endl;
+    accepted_contacts = std::move(current);
   }
 
   template <int dim>
@@ -525,7 +613,14 @@ namespace levelsinter
   double
   GrainBoundaryDiffusion<dim>::time_step_limit(const LevelSetField<dim> &) const
   {
-    return max_speed > 0 ? 0.5 * h_min / max_speed :
+    // The explicit law's limit is that of its stability; the implicit law
+    // is stable at any step and its limit is the shape's accuracy: the
+    // pair's end state is off by 3-4 % at the CFL step, within 0.6 % at
+    // accuracy_fraction (doc/validation.md, "Settling the pair: the step's
+    // accuracy, clear stops").
+    const double fraction =
+      parameters.implicit_contact ? accuracy_fraction : 0.5;
+    return max_speed > 0 ? fraction * h_min / max_speed :
                            std::numeric_limits<double>::infinity();
   }
 

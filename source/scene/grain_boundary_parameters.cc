@@ -86,7 +86,12 @@ namespace levelsinter
                         "time step, where the explicit law oscillates "
                         "from step to step once the time step exceeds "
                         "about C_gb dt / (a l^3) ~ 1 (doc/numerics.md, "
-                        "\"Settling: the implicit contact law\").");
+                        "\"Settling: the implicit contact law\"). Its step "
+                        "is limited by accuracy instead: no contact's "
+                        "approach or deposition moves the surface by more "
+                        "than 0.03 finest cell in a step (doc/numerics.md, "
+                        "\"Settling: the step's accuracy and clear "
+                        "stops\").");
     }
     prm.leave_subsection();
   }

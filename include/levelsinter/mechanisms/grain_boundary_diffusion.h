@@ -10,6 +10,7 @@
 #include <levelsinter/scene/grain_boundary_parameters.h>
 
 #include <limits>
+#include <map>
 #include <vector>
 
 namespace levelsinter
@@ -69,7 +70,10 @@ namespace levelsinter
 
     /**
      * No grain boundary closes, and no deposition moves the surface, by
-     * more than half a finest cell in a step (the last velocities).
+     * more than half a finest cell in a step (the last velocities); with
+     * the implicit contact law, which is stable at any step, by more than
+     * accuracy_fraction of a cell (doc/numerics.md, "Settling: the step's
+     * accuracy").
      */
     double
     time_step_limit(const LevelSetField<dim> &alpha) const override;
@@ -168,6 +172,17 @@ namespace levelsinter
     void
     compute(const LevelSetField<dim> &alpha, const double dt);
 
+    // Stops the run, with what the model cannot represent, where a grain
+    // boundary's equilibrium neck is narrower than the triple-line kernel
+    // or a grain boundary has reached a grain's centre.
+    void
+    check_representable() const;
+
+    // Reports the contacts of the last accepted step that the accepted
+    // trial no longer has, and keeps the trial's.
+    void
+    report_lost_contacts(const LevelSetField<dim> &alpha);
+
     // S = dF/d(delta): how much the approach delta = u dt of a step,
     // deposited at the triple line, lowers the driving force F of
     // @p boundary, from its kernel_sums() @p sum.
@@ -204,6 +219,11 @@ namespace levelsinter
     std::vector<Tensor<1, dim>>   trial_velocity;
     double                        trial_dt = 0;
     std::vector<Contact>          last_contacts;
+    // The contacts (i, j) of the last accepted step and their approach
+    // rates: a grain boundary that is no longer found is reported.
+    std::map<std::pair<unsigned int, unsigned int>, double> accepted_contacts;
+    // The start of the trial step, for that report.
+    double trial_start_time = 0;
     std::vector<grain_geometry::GrainBoundary<dim>> boundaries;
     // Whether boundaries are those of the state compute() sees (found by
     // triple_line_potential() before the surface-diffusion solve).
@@ -221,6 +241,9 @@ namespace levelsinter
     // The largest approach rate and deposition speed of the last compute().
     double max_speed = 0;
     double h_min     = 0;
+    // The implicit law's step limit: the fraction of a finest cell a
+    // contact's approach or deposition moves the surface in a step.
+    static constexpr double accuracy_fraction = 0.03;
     mutable dealii::Vector<float> grain_id, boundary_indicator;
   };
 } // namespace levelsinter
