@@ -14,8 +14,7 @@ namespace levelsinter
                     const DoFHandler<dim>               &field_dofs,
                     const unsigned int                   component,
                     const TrilinosWrappers::MPI::Vector &field,
-                    TrilinosWrappers::MPI::Vector       &surface_mass,
-                    std::array<TrilinosWrappers::MPI::Vector, dim> &surface_normal,
+                    InterfaceMoments<dim>               &moments,
                     TrilinosWrappers::MPI::Vector       &flux)
   {
     SolidPressureGradient<dim> pressure_gradient(level_set,
@@ -28,7 +27,8 @@ namespace levelsinter
     interface_measures::RegionIntegrands<dim> integrands;
     integrands.solid_flags   = update_gradients | update_JxW_values;
     integrands.surface_flags =
-      update_values | update_JxW_values | update_normal_vectors;
+      update_values | update_JxW_values | update_normal_vectors |
+      update_quadrature_points;
     integrands.on_solid = [&](const auto &cell, const FEValues<dim> &solid) {
       const auto &gradients = pressure_gradient.evaluate(cell, solid);
       cell->get_dof_indices(indices);
@@ -45,14 +45,19 @@ namespace levelsinter
         cell->get_dof_indices(indices);
         for (unsigned int q = 0; q < surface.n_quadrature_points; ++q)
           {
-            const double JxW = measure.JxW(surface, q);
+            const double          JxW    = measure.JxW(surface, q);
+            const Tensor<1, dim> &normal = surface.normal_vector(q);
+            const Point<dim>     &x      = surface.quadrature_point(q);
             for (unsigned int i = 0; i < indices.size(); ++i)
               {
                 const double value = surface.shape_value(i, q) * JxW;
-                surface_mass(indices[i]) += value;
+                moments.mass(indices[i]) += value;
                 for (unsigned int d = 0; d < dim; ++d)
-                  surface_normal[d](indices[i]) +=
-                    value * surface.normal_vector(q)[d];
+                  {
+                    moments.normal[d](indices[i]) += value * normal[d];
+                    moments.position[d](indices[i]) += value * x[d];
+                  }
+                moments.normal_position(indices[i]) += value * (normal * x);
               }
           }
       };
@@ -64,15 +69,13 @@ namespace levelsinter
                        const DoFHandler<2> &,
                        const unsigned int,
                        const TrilinosWrappers::MPI::Vector &,
-                       TrilinosWrappers::MPI::Vector &,
-                       std::array<TrilinosWrappers::MPI::Vector, 2> &,
+                       InterfaceMoments<2> &,
                        TrilinosWrappers::MPI::Vector &);
   template void
   add_boundary_flux<3>(const LevelSetField<3> &,
                        const DoFHandler<3> &,
                        const unsigned int,
                        const TrilinosWrappers::MPI::Vector &,
-                       TrilinosWrappers::MPI::Vector &,
-                       std::array<TrilinosWrappers::MPI::Vector, 3> &,
+                       InterfaceMoments<3> &,
                        TrilinosWrappers::MPI::Vector &);
 } // namespace levelsinter

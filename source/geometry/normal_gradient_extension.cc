@@ -42,13 +42,6 @@ namespace levelsinter
     // node, in h_min^(dim - 1) (compute_flux_sources()): about half a
     // cell's width of interface in the cells at the node.
     constexpr double flux_support_fraction = 0.5;
-
-    // Least |mean n| over the interface in an outer boundary-flux source's
-    // patch (compute_flux_sources()). The patch spans about four cells: on a
-    // circle of radius R >= 4 h, |mean n| >= sin(1/2) / (1/2) = 0.96, while
-    // in a young neck's gap the flanks meet at 120-150 degrees (|mean n| of
-    // 0.3-0.5).
-    constexpr double least_mean_normal = 0.9;
   } // namespace
 
   template <int dim>
@@ -180,23 +173,22 @@ namespace levelsinter
     const auto    &dofs  = level_set.dof_handler();
     const MPI_Comm comm  = dofs.get_communicator();
     const auto    &owned = level_set.locally_owned();
-    Vector                 surface_mass, flux;
-    std::array<Vector, dim> surface_normal;
-    surface_mass.reinit(owned, level_set.locally_relevant(), comm, true);
-    flux.reinit(owned, level_set.locally_relevant(), comm, true);
-    for (auto &component : surface_normal)
-      component.reinit(owned, level_set.locally_relevant(), comm, true);
-    add_boundary_flux<dim>(level_set,
-                           field_dofs,
-                           component,
-                           field,
-                           surface_mass,
-                           surface_normal,
-                           flux);
-    surface_mass.compress(VectorOperation::add);
-    flux.compress(VectorOperation::add);
-    for (auto &component : surface_normal)
-      component.compress(VectorOperation::add);
+    InterfaceMoments<dim> moments;
+    Vector                flux;
+    std::vector<Vector *> accumulated = {&moments.mass,
+                                         &moments.normal_position,
+                                         &flux};
+    for (unsigned int d = 0; d < dim; ++d)
+      {
+        accumulated.push_back(&moments.normal[d]);
+        accumulated.push_back(&moments.position[d]);
+      }
+    for (Vector *vector : accumulated)
+      vector->reinit(owned, level_set.locally_relevant(), comm, true);
+    add_boundary_flux<dim>(
+      level_set, field_dofs, component, field, moments, flux);
+    for (Vector *vector : accumulated)
+      vector->compress(VectorOperation::add);
 
     // The test function of node i is w_i = sum of phi_j over the nodes j
     // of the cells at i (each once): 1 on those cells, 0 one ring further,
@@ -218,27 +210,42 @@ namespace levelsinter
       patch.vmult(sum, owned_part);
       return sum;
     };
-    const Vector patch_mass = patch_sum(surface_mass);
-    const Vector patch_flux = patch_sum(flux);
-    std::array<Vector, dim> patch_normal;
+    const Vector patch_mass            = patch_sum(moments.mass);
+    const Vector patch_flux            = patch_sum(flux);
+    const Vector patch_normal_position = patch_sum(moments.normal_position);
+    std::array<Vector, dim> patch_normal, patch_position;
     for (unsigned int d = 0; d < dim; ++d)
-      patch_normal[d] = patch_sum(surface_normal[d]);
+      {
+        patch_normal[d]   = patch_sum(moments.normal[d]);
+        patch_position[d] = patch_sum(moments.position[d]);
+      }
 
     // A node whose cells the interface only clips at a corner takes the
     // carried values of its neighbours instead. So does a node outside the
-    // solid whose patch holds interface facing apart (|mean n| below
-    // least_mean_normal): in the gap of a concave corner narrower than the
-    // patch (a young neck, whose meniscus is below a cell) its average is
-    // over the flanks on both sides, not over the foot of the corner below
-    // it. There xi changes sign within a cell (the foot fills, the flanks
-    // feed it), so the cut cells at the foot interpolated the foot's value
-    // from inside with the flanks' from outside: the two grains' neck at
-    // R/h = 25.6 stalled from t = 0.002 s, its foot moving inwards
-    // (doc/validation.md, "Volume diffusion: the neck's sources"). Carried
-    // along N from the solid's side, the nodes in the gap take the foot's
-    // value. Elsewhere the outer nodes stay sources: their patches hold
-    // less solid, where the discrete p is not harmonic (with the solid's
-    // nodes alone the cylinder's mode 2 was 7 % slow at R/h = 32).
+    // solid whose patch holds interface that bends towards it, the solid
+    // concave there. The quotient averages xi over the interface in the
+    // patch, and on the concave side that interface wraps around the node:
+    // the patch of a node in a neck's gap holds the flanks on both sides
+    // and the foot of the neck below it, while an inner node's patch there
+    // holds the foot alone. At the foot xi changes sign within a cell or
+    // two (the foot fills, the flanks feed it), so the outer node took the
+    // flanks' sign and the cut cells at the foot, interpolating it with the
+    // inner node's, moved the foot inwards: the two grains' neck stalled,
+    // at R/h = 25.6 from t = 0.002 s while the gap was narrower than the
+    // patch, and at R/h = 51.2 from t = 0.0004 s with a meniscus of about
+    // 3 cells that the former test of one sheet (|mean n| >= 0.9) let
+    // through (doc/validation.md, "Volume diffusion: the neck's sources",
+    // "... the neck at three meshes"). Carried along N from the solid's
+    // side, these nodes take the foot's value. Where the solid is convex
+    // the outer nodes stay sources: there the inner nodes' patches are the
+    // ones wrapped around, and hold more solid, where the discrete p is
+    // not harmonic (with the solid's nodes alone the cylinder's mode 2 was
+    // 7 % slow at R/h = 32). Which side the interface bends to: with c its
+    // centroid in the patch, int_Gamma n . (x - c) w_i ds is
+    // int |x - c|^2 w_i ds / R > 0 on a circle of radius R around the
+    // solid and the negative of it around a hole; two sheets facing each
+    // other across a gap count as concave, as does the gap of a concave
+    // corner. In an axisymmetric scene this is the meridian curve's bend.
     const double h_min = finest_cell_size(dofs.get_triangulation());
     const double least_support =
       flux_support_fraction * std::pow(h_min, dim - 1);
@@ -248,11 +255,10 @@ namespace levelsinter
       if (patch_mass(i) >= least_support &&
           !level_set.constraints().is_constrained(i))
         {
-          double mean_normal = 0;
+          double bend = patch_normal_position(i);
           for (unsigned int d = 0; d < dim; ++d)
-            mean_normal += std::pow(patch_normal[d](i) / patch_mass(i), 2);
-          if (filter.distance(level_set.alpha()(i)) >= 0 &&
-              std::sqrt(mean_normal) < least_mean_normal)
+            bend -= patch_position[d](i) / patch_mass(i) * patch_normal[d](i);
+          if (filter.distance(level_set.alpha()(i)) >= 0 && bend < 0)
             continue;
           is_source(i) = 1;
           values(i)    = patch_flux(i) / patch_mass(i);
