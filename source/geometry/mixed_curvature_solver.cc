@@ -366,9 +366,8 @@ namespace levelsinter
     block_rhs.block(0) = rhs;
 
     // M + b L and M + b K_A from the blocks (kv holds -b K_A, vk b L), on
-    // the same pattern; identity rows outside the band come from M. Built
-    // here and dropped after the solve: kept between steps, they held 2 of
-    // the 6 matrices the solver kept beside the other solvers' peaks.
+    // the same pattern; identity rows outside the band come from M. Like
+    // the blocks, they live for this solve only.
     SparseMatrix tangential_shift, isotropic_shift;
     tangential_shift.copy_from(kk);
     tangential_shift.add(1., vk);
