@@ -202,6 +202,21 @@ packing_convergence_test(packing_step_27 packing_154_coupled_3d.prm
   --ranks 1
   --set "Time/CFL number=0.5")
 
+# The coupled packing at h and h / 2 with the scene as shipped (solid
+# space, recovered xi, CFL 1.5; issue 26, doc/validation.md, "Packings: the
+# coupled scene at h and h / 2"): 8 spheres made like the 154 to t = 0.005
+# s. h / 2 keeps the physics: xi's depth lambda h = 0.028 um (lambda = 6
+# cells of h / 2), the band and the filter in um as the scene's; it starts
+# from Minimum level 2 (see the surface-diffusion study below). Measured
+# (29 Nov 2026, session 28): 1 rank beside other jobs, 5 steps at h (331 s
+# of wall), 10 at h / 2 (4 237 s).
+packing_convergence_test(packing_resolution_coupled_8
+  packing_154_coupled_3d.prm 0.6 2 packing_8_like_154_3d.csv
+  0.005 0.001,0.0025,0.005
+  --case "h"
+  --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
+  --reference h2 --ranks 1)
+
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
 # settings of packing_154_surface_diffusion_3d.prm to its end time t =
