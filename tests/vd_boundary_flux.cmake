@@ -143,3 +143,23 @@ foreach(level_e_band_end "4;0.24;0.236;0.02" "5;0.12;0.118;0.02"
     ${FLUX_TOTAL})
 endforeach()
 set_tests_properties(${FLUX_STUDIES} PROPERTIES LABELS validation-long)
+
+# --- The two grains from a fillet (issue 27) -------------------------------
+# two_grains_filleted_volume_diffusion_2d.prm: the neck starts from a
+# resolved fillet (x0/R = 0.30, rounding radius 2 cells at R/h = 12.8), the
+# same shape on every mesh, with xi as the boundary flux, the total state,
+# ghost penalty 1, the filter and band fixed in length and one fixed step
+# (the finest mesh's) for every mesh (doc/validation.md, "Volume
+# diffusion: the neck from a fillet").
+set(VD_FILLET
+  ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_filleted_volume_diffusion_2d.prm)
+# The studies: R/h = 12.8, 25.6, 51.2 to t = 0.005 s (334 steps each).
+set(FILLET_STUDIES)
+foreach(level 4 5 6)
+  add_test(NAME study_flux_fillet_vd_neck_l${level}_2d COMMAND ${SD_VALIDATE}
+    neck ${VD_FILLET} 2000 --sample-interval 1
+    --set "Mesh refinement/Maximum level=${level}"
+    --csv flux_fillet_vd_neck_l${level}_2d.csv)
+  list(APPEND FILLET_STUDIES study_flux_fillet_vd_neck_l${level}_2d)
+endforeach()
+set_tests_properties(${FILLET_STUDIES} PROPERTIES LABELS validation-long)
