@@ -57,8 +57,10 @@ add_test(NAME volume_diffusion_flux_total_cylinder_mode2_2d
 # The two grains at R/h = 25.6 (the scene's mesh) with the total state and
 # ghost penalty 1, to t = 0.005 s (43 steps): the nodes outside the solid
 # are flux sources only where the solid is convex in their patch, so the
-# neck's foot is read from inside. Measured: x/R 0.2307 -> 0.4007
-# (x 1.737, 44 s CPU). With session 26's one-sheet test (|mean n| >= 0.9)
+# neck's foot is read from inside, and (session 28) inner nodes within a
+# quarter cell of a concave interface are no sources either. Measured:
+# x/R 0.2307 -> 0.3978 (x 1.724, 44 steps, 42 s CPU; before the inner
+# rule x 1.737, 43 steps). With session 26's one-sheet test (|mean n| >= 0.9)
 # x 1.560, with growth stalling below each grid node the foot passed
 # (x/R 0.347-0.351 over t = 0.0025-0.004 s), and with every node with
 # interface support a source x 1.157 (the stall at 0.266; doc/validation.md,
@@ -143,3 +145,38 @@ foreach(level_e_band_end "4;0.24;0.236;0.02" "5;0.12;0.118;0.02"
     ${FLUX_TOTAL})
 endforeach()
 set_tests_properties(${FLUX_STUDIES} PROPERTIES LABELS validation-long)
+
+# --- The two grains from a fillet (issue 27) -------------------------------
+# two_grains_filleted_volume_diffusion_2d.prm: the neck starts from a
+# resolved fillet (x0/R = 0.30, rounding radius 2 cells at R/h = 12.8), the
+# same shape on every mesh, with xi as the boundary flux, the total state,
+# ghost penalty 1, the filter and band fixed in length and one fixed step
+# (the finest mesh's) for every mesh (doc/validation.md, "Volume
+# diffusion: the neck from a fillet").
+set(VD_FILLET
+  ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_filleted_volume_diffusion_2d.prm)
+# CI: R/h = 12.8 to t = 0.005 s (334 steps). Measured: x/R 0.2996 ->
+# 0.3671 (x 1.225), |dV/V| 1.6e-7, 44.5 s CPU (loaded cores). With
+# the inner nodes at the concave foot as sources (the rule before) x 1.210:
+# the neck stood still at its first grid node (below a fifth of its mean
+# speed from t = 1.03 to 1.32 ms; at R/h = 25.6 from 1.6 ms to beyond
+# 3.19 ms); with w_i = phi_i at those nodes x 1.086. Limits: growth
+# x 1.215 (between the rule and the one before) and |dV/V| 1e-5.
+add_test(NAME volume_diffusion_flux_fillet_two_grains_2d COMMAND ${SD_VALIDATE}
+  neck ${VD_FILLET} 400 --sample-interval 1
+  --set "Mesh refinement/Maximum level=4"
+  --min-neck-growth 1.215 --max-volume-change 1e-5)
+# The studies: R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to
+# t = 0.0022 s (147 steps: at step 149 the extension's GMRES stalled).
+set(FILLET_STUDIES)
+foreach(level_end "4;0.005" "5;0.005" "6;0.0022")
+  list(GET level_end 0 level)
+  list(GET level_end 1 end)
+  add_test(NAME study_flux_fillet_vd_neck_l${level}_2d COMMAND ${SD_VALIDATE}
+    neck ${VD_FILLET} 2000 --sample-interval 1
+    --set "Mesh refinement/Maximum level=${level}"
+    --set "Time/End time=${end}" --set "Time/Time step=1.497005988e-5"
+    --csv flux_fillet_vd_neck_l${level}_2d.csv)
+  list(APPEND FILLET_STUDIES study_flux_fillet_vd_neck_l${level}_2d)
+endforeach()
+set_tests_properties(${FILLET_STUDIES} PROPERTIES LABELS validation-long)
