@@ -456,11 +456,17 @@ def swing(run, ratio, body, t_from):
                                 sum(error) / len(error),
                                 sum(change) / len(change)))
     psi = [r[5] for r in table]
+    # The angle at which the fitted (far) circles meet the grain boundary's
+    # plane, 2 acos(d / 2R): the far shape's dihedral angle, against psi's
+    # reading by the near circles.
+    far = [2 * math.degrees(math.acos(r[4] / (2 * r[2]))) for r in table]
     rates = [row["approach_rate"] for row in rows(run + "/grain_boundaries.csv")
              if row["time"] >= t_from and math.isfinite(row["approach_rate"])]
-    print("psi %.1f to %.1f, mean %.2f; approach rate %+.2f to %+.2f, mean "
+    print("psi %.1f to %.1f, mean %.2f; far circles' angle 2 acos(d / 2R) "
+          "%.1f to %.1f, mean %.2f; approach rate %+.2f to %+.2f, mean "
           "%+.2f; %d rows from t = %g" %
-          (min(psi), max(psi), sum(psi) / len(psi), min(rates), max(rates),
+          (min(psi), max(psi), sum(psi) / len(psi), min(far), max(far),
+           sum(far) / len(far), min(rates), max(rates),
            sum(rates) / len(rates), len(table), table[0][1]))
 
 

@@ -673,6 +673,34 @@ grains_check(${name}_resting ${name} resting ${name} 0.005 2)
 grains_check(${name}_settled ${name} settled ${name} 1 2 0.02 0.01 2)
 set_tests_properties(${name}_run ${name}_resting ${name}_settled PROPERTIES
   LABELS validation-long)
+# The same at R/h = 32 (the scenes' own mesh), 2D and axisymmetric, with
+# the accuracy limit (thirteenth increment; doc/validation.md, "Settling
+# the pair: R/h = 32"): 1583 steps, 592 s CPU (2D); 1788 steps, 342 s
+# (axisymmetric). Over t >= 0.02 measured R, a, d within 0.58, 0.82, 1.41
+# % (2D) and 0.58, 0.34, 1.18 % (axisymmetric), psi's mean 120.1 and
+# 120.4: d is a steady -0.9 % on the mean in both (the far circles meet
+# the plane at 120.8 degrees), the same with the step capped at 2.5e-4
+# (2D) or at the axisymmetric pair's late steps of 5e-5, so not the step.
+# The issue's 1 % is met by R and a, not by d's largest: limits 2 % (the
+# CFL step's error was 2.5 %, the tenth increment's explicit law 1.8 %)
+# and 2 degrees.
+foreach(body 2d axisymmetric)
+  set(name grains_equilibrium_${body}_implicit_R32)
+  grains_run(${name} grains_equilibrium_${body}.prm 3000
+    --set "Time/End time=0.05"
+    --set "Grain boundaries/Deposition width=6"
+    --set "Grain boundaries/Triple-line kink width=2"
+    --set "Grain boundaries/Implicit contact law=true")
+  if(body STREQUAL "2d")
+    set(body_dim 2)
+  else()
+    set(body_dim 3)
+  endif()
+  grains_check(${name}_settled ${name} settled ${name} 1 ${body_dim} 0.02
+    0.02 2)
+  set_tests_properties(${name}_run ${name}_settled PROPERTIES
+    LABELS validation-long)
+endforeach()
 
 # --- Clear stops (issue 28, twelfth increment; doc/validation.md,
 # "Settling the pair: the step's accuracy, clear stops") -----------------
@@ -688,6 +716,21 @@ bad_input_test(grains_neck_unresolved "the neck cannot be resolved"
   --set "Grain boundaries/Energy ratio=1.9"
   --set "Output/Directory=grains_neck_unresolved"
   ${GRAIN_SCENES}/grains_equilibrium_2d.prm)
+# Above l but below 2 l the runs do not settle (thirteenth increment: R/h
+# = 8 at gamma_gb = gamma_s, r sin(psi/2) = 1.15 l; gamma_gb / gamma_s =
+# 1.9 at R/h = 32, 1.66 l; doc/validation.md, "Settling the pair: R/h =
+# 32, the axisymmetric pair, R/h = 8"), and the 27-grain packing at level
+# 2 runs there: the run goes on and says so after its first step. The
+# pair at R/h = 8, one step (measured 0.2 s CPU).
+set(name grains_neck_barely_resolved)
+add_test(NAME ${name} COMMAND $<TARGET_FILE:levelsinter> --overwrite
+  --set "Output/Field formats=none" --set "Output/Progress interval=0"
+  ${GRAINS_R8} --set "Grain boundaries/Deposition width=6"
+  --set "Grain boundaries/Triple-line kink width=2"
+  --set "Time/Maximum steps=1" --set "Output/Directory=${name}"
+  ${GRAIN_SCENES}/grains_equilibrium_2d.prm)
+set_tests_properties(${name} PROPERTIES PASS_REGULAR_EXPRESSION
+  "warning: 1 of the 1 grain boundaries have an equilibrium radius r sin\\(psi/2\\) of fewer than 2")
 # d -> 0: two grains whose centres are 0.02 apart (R/h = 16: their grain
 # boundary 0.01 from each centre, less than a finest cell 0.0156), the
 # state a pair reaches when gamma_gb -> 0 merges it into one disc or a

@@ -21,6 +21,13 @@ namespace levelsinter
     // The sums kernel_sums() returns per grain boundary.
     constexpr unsigned int n_sums = 5;
 
+    // An equilibrium neck r sin(psi/2) of fewer triple-line kernel
+    // half-widths than this was measured not to settle: 1.15 (R/h = 8,
+    // gamma_gb = gamma_s) and 1.66 (R/h = 32, gamma_gb / gamma_s = 1.9);
+    // 2.3 settled (R/h = 16) (doc/validation.md, "Settling the pair: R/h =
+    // 32, the axisymmetric pair, R/h = 8").
+    constexpr double settled_neck_kernels = 2;
+
     // The solution of matrix x = rhs with no component in the matrix's
     // null space (singular values below 1e-10 of the largest count as
     // zero), by the singular-value decomposition.
@@ -551,22 +558,56 @@ namespace levelsinter
       current[{contact.boundary.i, contact.boundary.j}] =
         contact.approach_rate;
     // The contacts are those of the state at the step's start, the same on
-    // every rank; rank 0 says which were lost.
+    // every rank; rank 0 says which were lost, and after the first step
+    // whether the pairs can settle: check_representable() stops below one
+    // kernel half-width, but up to settled_neck_kernels the runs measured
+    // relaxation cycles or offsets of 5-34 %, and scenes run there for
+    // their early stage (the 27-grain packing at level 2).
     if (Utilities::MPI::this_mpi_process(
           alpha.dof_handler().get_communicator()) == 0)
-      for (const auto &[pair, rate] : accepted_contacts)
-        if (current.count(pair) == 0)
-          std::cout << "note: t = " << trial_start_time
-                    << ": the grain boundary of grains " << pair.first
-                    << " and " << pair.second
-                    << " is gone (its grains are more than 10 % beyond "
-                       "touching, its plane no longer meets the solid, or its "
-                       "triple line no longer meets the interface; last "
-                       "approach rate "
-                    << rate
-                    << "): no contact law acts between the two grains any "
-                       "more"
-                    << std::endl;
+      {
+        if (trial_start_time == 0)
+          {
+            const double sin_half  = parameters.sin_half_dihedral_angle();
+            double       narrowest = std::numeric_limits<double>::max();
+            unsigned int narrow    = 0;
+            for (const auto &contact : last_contacts)
+              {
+                const double neck = std::min(radii[contact.boundary.i],
+                                             radii[contact.boundary.j]) *
+                                    sin_half / deposition_width;
+                narrowest = std::min(narrowest, neck);
+                narrow += (neck < settled_neck_kernels);
+              }
+            if (narrow > 0)
+              std::cout << "warning: " << narrow << " of the "
+                        << last_contacts.size()
+                        << " grain boundaries have an equilibrium radius r "
+                           "sin(psi/2) of fewer than "
+                        << settled_neck_kernels
+                        << " triple-line kernel half-widths (Deposition "
+                           "width x h_min = "
+                        << deposition_width << "; the narrowest " << narrowest
+                        << "): pairs there were measured not to settle at "
+                           "their equilibrium (doc/validation.md, \"Settling "
+                           "the pair: R/h = 32, the axisymmetric pair, R/h = "
+                           "8\"); refine the mesh for the end state"
+                        << std::endl;
+          }
+        for (const auto &[pair, rate] : accepted_contacts)
+          if (current.count(pair) == 0)
+            std::cout << "note: t = " << trial_start_time
+                      << ": the grain boundary of grains " << pair.first
+                      << " and " << pair.second
+                      << " is gone (its grains are more than 10 % beyond "
+                         "touching, its plane no longer meets the solid, or "
+                         "its triple line no longer meets the interface; last "
+                         "approach rate "
+                      << rate
+                      << "): no contact law acts between the two grains any "
+                         "more"
+                      << std::endl;
+      }
     accepted_contacts = std::move(current);
   }
 

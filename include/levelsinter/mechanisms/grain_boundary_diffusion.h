@@ -178,8 +178,8 @@ namespace levelsinter
     void
     check_representable() const;
 
-    // Reports the contacts of the last accepted step that the accepted
-    // trial no longer has, and keeps the trial's.
+    // Reports the contacts the accepted trial lost (and warns of new ones
+    // whose equilibrium neck is barely resolved), and keeps the trial's.
     void
     report_lost_contacts(const LevelSetField<dim> &alpha);
 
