@@ -12,5 +12,7 @@ else
   ARGS="--set Output/Directory=$OUT --set Output/Checkpoint\ interval=5 --set Output/Checkpoint\ minutes=20 --set Geometry/Particle\ file=/work/main/parameter_files/packing_154_3d.csv /work/main/parameter_files/packing_154_coupled_3d.prm"
 fi
 N=$(ls full154_*.log 2>/dev/null | wc -l)
-eval mpirun --allow-run-as-root -np ${NP:-1} -x LD_LIBRARY_PATH /usr/bin/time -v -o $OUT.time.$N $BIN/levelsinter $ARGS > full154_$N.log 2>&1
+# /usr/bin/time outside mpirun: inside, SIGUSR1 reached time, not
+# levelsinter, and the run died without its stop checkpoint.
+eval /usr/bin/time -v -o $OUT.time.$N mpirun --allow-run-as-root -np ${NP:-1} -x LD_LIBRARY_PATH $BIN/levelsinter $ARGS > full154_$N.log 2>&1
 echo "exit $?" >> full154_$N.log
