@@ -243,11 +243,18 @@ namespace levelsinter
         warned_unsourced = true;
         if (Utilities::MPI::this_mpi_process(
               alpha.dof_handler().get_communicator()) == 0)
-          std::cout << "warning: t = " << t << ": " << unsourced
-                    << " interface cells lie where the solid is thinner than "
-                    << "2 lambda; volume diffusion is off there (refine there "
-                    << "or lower 'Volume diffusion/Interior offset')"
-                    << std::endl;
+          std::cout
+            << "warning: t = " << t << ": " << unsourced
+            << " interface cells have no node deep enough in the solid to "
+            << "read xi from (the solid, or the refined band on its side, "
+            << "is thinner than about 2 lambda); volume diffusion is off "
+            << "there. Measured on 8 spheres like the 154 packing: such "
+            << "cells grow to 4 % of the interface by t = 0.01 s and cost "
+            << "0.37 % of the relative density; refine there, widen "
+            << "'Level set/Filter thickness' and 'Mesh refinement/Band "
+            << "width', or lower 'Volume diffusion/Interior offset' "
+            << "(doc/validation.md, \"Packings: interface cells without a "
+            << "xi source\")" << std::endl;
       }
   }
 
