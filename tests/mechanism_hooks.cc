@@ -7,7 +7,8 @@
 //     move a refined ring across a square with base level MIN_LEVEL; the
 //     largest nodal error against the field's interpolant on the final
 //     mesh must fall with the orders of interpolation (2 and 3) between
-//     the levels.
+//     the levels. After each change of alpha its mesh classifier is one
+//     object for all callers, a new one, and classifies as a fresh one.
 //   mechanism_hooks lagged SCENE.prm STEPS --max-lag-change C [--set ...]
 //     A surface-diffusion run: after every step that followed an
 //     adaptation, v_s^{n-1} must be there, on the new DoFs, and within
@@ -34,6 +35,8 @@
 
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
+
+#include <deal.II/non_matching/mesh_classifier.h>
 
 #include <levelsinter/level_set/level_set_field.h>
 #include <levelsinter/level_set/state_transfer.h>
@@ -95,6 +98,28 @@ namespace
     return Utilities::MPI::max(error, dofs.get_communicator());
   }
 
+  // The level set's shared classifier after alpha changed (@p changed_from:
+  // the one before): one object for all callers, a new one after each
+  // change, and the same locations as a classification made afresh.
+  bool
+  classifier_follows(
+    const LevelSetField<2>                                &level_set,
+    const std::shared_ptr<const NonMatching::MeshClassifier<2>> &changed_from)
+  {
+    const auto shared = level_set.classifier();
+    bool       ok     = shared == level_set.classifier() && shared != changed_from;
+    NonMatching::MeshClassifier<2> fresh(level_set.dof_handler(),
+                                         level_set.alpha());
+    fresh.reclassify();
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        ok &= shared->location_to_level_set(cell) ==
+              fresh.location_to_level_set(cell);
+    return Utilities::MPI::min(ok ? 1 : 0, MPI_COMM_WORLD) == 1;
+  }
+
+  bool classifier_shared = true;
+
   // Errors (Q1 scalar, Q2 vector) after eight adaptations from level L.
   std::pair<double, double>
   transfer_errors(const unsigned int min_level)
@@ -120,6 +145,7 @@ namespace
     TrilinosWrappers::MPI::Vector       vector_field;
     q1.setup_dofs();
     q1.interpolate(scalar);
+    classifier_shared &= classifier_follows(q1, nullptr);
     setup_q2(vector_field);
     {
       TrilinosWrappers::MPI::Vector owned(q2.locally_owned_dofs(), comm);
@@ -145,6 +171,7 @@ namespace
                   else if (!near && cell->level() > int(min_level))
                     cell->set_coarsen_flag();
                 }
+            const auto       before = q1.classifier();
             StateTransfer<2> state;
             q1.add_to(state);
             state.add(q2, {&vector_field});
@@ -153,6 +180,7 @@ namespace
             q1.setup_dofs();
             setup_q2(vector_field);
             state.interpolate();
+            classifier_shared &= classifier_follows(q1, before);
           }
       }
     return {nodal_error(q1.dof_handler(), q1.alpha(), scalar),
@@ -219,6 +247,9 @@ namespace
                       std::to_string(option(args, "--min-order-q2")),
                     q2 >= option(args, "--min-order-q2"));
       }
+    ok &= check("one shared mesh classifier per alpha, renewed with alpha, "
+                "classifying as a fresh one",
+                classifier_shared);
     return ok;
   }
 

@@ -11,7 +11,9 @@ set(HOOKS $<TARGET_FILE:mechanism_hooks>)
 # 1.92), Q2 3.55e-4 -> 4.13e-5 (order 3.10), equal on 1 and 2 ranks: what
 # interpolation on the coarsest mesh each point passed through leaves
 # (orders 2 and 3). Limits 1.8 and 2.8: a lost field, a wrong DoFHandler or
-# missing hanging-node values give order 0 or less.
+# missing hanging-node values give order 0 or less. The level set's shared
+# mesh classifier (LevelSetField::classifier()) must be renewed when alpha
+# is set or transferred and classify every cell as a fresh one does.
 ranks_test(mechanism_hooks_transfer_2d COMMAND ${HOOKS} transfer 3 4
   --min-order-q1 1.8 --min-order-q2 2.8)
 # Surface diffusion keeps v_s^{n-1} (Eq. 81) across adaptations: two

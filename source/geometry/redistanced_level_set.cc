@@ -94,8 +94,7 @@ namespace levelsinter
     interface_points(const LevelSetField<dim> &level_set)
     {
       const auto &dofs = level_set.dof_handler();
-      NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
-      classifier.reclassify();
+      const auto classifier = level_set.classifier();
       NonMatching::RegionUpdateFlags flags;
       flags.surface = update_normal_vectors | update_quadrature_points;
       const hp::FECollection<dim>     fe_collection(level_set.fe());
@@ -108,7 +107,7 @@ namespace levelsinter
                                             cells,
                                             lines,
                                             flags,
-                                            classifier,
+                                            *classifier,
                                             dofs,
                                             level_set.alpha());
       std::vector<double> local;

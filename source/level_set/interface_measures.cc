@@ -73,8 +73,7 @@ namespace levelsinter::interface_measures
                     const RegionIntegrands<dim> &integrands)
   {
     const auto &dofs = level_set.dof_handler();
-    NonMatching::MeshClassifier<dim> classifier(dofs, level_set.alpha());
-    classifier.reclassify();
+    const auto classifier = level_set.classifier();
 
     // The points as well: every integrand weighs JxW with the scene's
     // measure (SceneMeasure::JxW), which reads them.
@@ -100,7 +99,7 @@ namespace levelsinter::interface_measures
                                           cells,
                                           lines,
                                           flags,
-                                          classifier,
+                                          *classifier,
                                           dofs,
                                           level_set.alpha());
     const bool solid      = integrands.solid_flags != update_default;
@@ -109,7 +108,7 @@ namespace levelsinter::interface_measures
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          const auto location = classifier.location_to_level_set(cell);
+          const auto location = classifier->location_to_level_set(cell);
           const bool wanted =
             location == NonMatching::LocationToLevelSet::intersected ?
               solid || atmosphere || surface :

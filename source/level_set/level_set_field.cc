@@ -39,6 +39,7 @@ namespace levelsinter
                          dofs.get_communicator());
     pattern.reset();
     volume_and_area.reset();
+    mesh_classifier.reset();
     may_keep_measurements = false;
   }
 
@@ -79,6 +80,7 @@ namespace levelsinter
     ghosted_alpha =
       ghosted_from_owned(owned, hanging_node_constraints, relevant_dofs);
     volume_and_area.reset();
+    mesh_classifier.reset();
     may_keep_measurements = true;
   }
 
@@ -92,10 +94,26 @@ namespace levelsinter
   }
 
   template <int dim>
+  std::shared_ptr<const NonMatching::MeshClassifier<dim>>
+  LevelSetField<dim>::classifier() const
+  {
+    if (mesh_classifier)
+      return mesh_classifier;
+    auto made =
+      std::make_shared<NonMatching::MeshClassifier<dim>>(dofs, ghosted_alpha);
+    made->reclassify();
+    if (may_keep_measurements)
+      mesh_classifier = made;
+    return made;
+  }
+
+  template <int dim>
   void
   LevelSetField<dim>::add_to(StateTransfer<dim> &transfer)
   {
-    transfer.add(dofs, {&ghosted_alpha});
+    transfer.add(dofs, {&ghosted_alpha}, [this]() {
+      may_keep_measurements = true;
+    });
   }
 
   template class LevelSetField<2>;

@@ -55,7 +55,8 @@ namespace levelsinter
   template <class VectorType>
   void
   StateTransfer<dim>::add_entry(const DoFHandler<dim>           &dof_handler,
-                                const std::vector<VectorType *> &vectors)
+                                const std::vector<VectorType *> &vectors,
+                                const std::function<void()>     &written)
   {
     for (const VectorType *v : vectors)
       if (v->size() != dof_handler.n_dofs())
@@ -68,9 +69,13 @@ namespace levelsinter
           entry->vectors.insert(entry->vectors.end(),
                                 vectors.begin(),
                                 vectors.end());
+          if (written)
+            entry->written.push_back(written);
           return;
         }
-    entries.emplace_back(Entry<VectorType>{&dof_handler, vectors, nullptr});
+    entries.emplace_back(Entry<VectorType>{&dof_handler, vectors, nullptr, {}});
+    if (written)
+      std::get<Entry<VectorType>>(entries.back()).written.push_back(written);
   }
 
   template <int dim>
@@ -79,6 +84,15 @@ namespace levelsinter
                           const std::vector<Vector *> &vectors)
   {
     add_entry(dof_handler, vectors);
+  }
+
+  template <int dim>
+  void
+  StateTransfer<dim>::add(const DoFHandler<dim>       &dof_handler,
+                          const std::vector<Vector *> &vectors,
+                          const std::function<void()> &written)
+  {
+    add_entry(dof_handler, vectors, written);
   }
 
   template <int dim>
@@ -173,6 +187,8 @@ namespace levelsinter
                        comm);
       }
     entry.transfer.reset();
+    for (const auto &written : entry.written)
+      written();
   }
 
   template class StateTransfer<2>;

@@ -205,10 +205,8 @@ namespace levelsinter
     system_rhs    = 0;
     schur_matrix  = 0;
 
-    NonMatching::MeshClassifier<dim> classifier(alpha.dof_handler(),
-                                                alpha.alpha());
-    classifier.reclassify();
-    make_constraints(&classifier);
+    const auto classifier = alpha.classifier();
+    make_constraints(classifier.get());
 
     // The terms: the bulk and ASGS terms per phase, the surface terms once
     // per cell, the traction on the free box faces.
@@ -245,7 +243,7 @@ namespace levelsinter
                                 schur_matrix);
         }
     if (ghost_penalty > 0)
-      assemble_ghost_penalty(alpha, classifier);
+      assemble_ghost_penalty(alpha, *classifier);
     compress_system(system_matrix, system_rhs, schur_matrix);
   }
 

@@ -292,9 +292,7 @@ namespace levelsinter
   void
   SolidElasticStokes<dim>::fit_to(const LevelSetField<dim> &alpha)
   {
-    classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
-      alpha.dof_handler(), alpha.alpha());
-    classifier->reclassify();
+    classifier = alpha.classifier();
     if (update_solid_cells(*classifier))
       setup_solid_system();
   }

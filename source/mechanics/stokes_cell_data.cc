@@ -76,9 +76,7 @@ namespace levelsinter
         phase_pressure_dofs[component[i] - dim].push_back(i);
     if (!inputs.extended_pressure && inputs.surface != SurfaceMeasure::sharp)
       return;
-    classifier = std::make_unique<NonMatching::MeshClassifier<dim>>(
-      inputs.alpha.dof_handler(), inputs.alpha.alpha());
-    classifier->reclassify();
+    classifier = inputs.alpha.classifier();
     NonMatching::RegionUpdateFlags flags;
     flags.surface = update_values | update_gradients | update_JxW_values |
                     update_normal_vectors | update_quadrature_points;

@@ -12,6 +12,8 @@
 #include <deal.II/lac/trilinos_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <deal.II/non_matching/mesh_classifier.h>
+
 #include <levelsinter/level_set/scene_measure.h>
 
 #include <memory>
@@ -147,6 +149,18 @@ namespace levelsinter
     keep_volume_and_area(
       const interface_measures::VolumeAndArea &measured) const;
 
+    /**
+     * Which cells and faces the interface of the current alpha cuts
+     * (NonMatching::MeshClassifier, reclassified). Made at the first call
+     * after alpha changed and shared by every cut-cell integration and
+     * solver on that alpha: a classification reads alpha on every cell and
+     * face, and a packing step asked for five (doc/performance.md,
+     * "Session 29"). A holder may keep it past a change of alpha; it then
+     * describes the alpha it was made for.
+     */
+    std::shared_ptr<const NonMatching::MeshClassifier<dim>>
+    classifier() const;
+
   private:
     SceneMeasure              scene_measure;
     FE_Q<dim>                 finite_element;
@@ -157,9 +171,12 @@ namespace levelsinter
     Vector                    ghosted_alpha;
     // Both belong to the current DoFs; the pattern also to the constraints.
     mutable std::unique_ptr<TrilinosWrappers::SparsityPattern> pattern;
-    // Kept only for an alpha set through set_from_owned(): after
-    // setup_dofs() a StateTransfer writes alpha without telling this class.
+    // Both kept only for an alpha this class knows of: set through
+    // set_from_owned() or written by the StateTransfer it was added to.
+    // After setup_dofs() and before that transfer, alpha is not yet set.
     mutable std::optional<interface_measures::VolumeAndArea> volume_and_area;
+    mutable std::shared_ptr<const NonMatching::MeshClassifier<dim>>
+         mesh_classifier;
     bool may_keep_measurements = false;
   };
 } // namespace levelsinter

@@ -57,6 +57,14 @@ namespace levelsinter
     void
     add(const DoFHandler<dim> &dof_handler, const std::vector<Vector *> &vectors);
 
+    /** The same, and @p written is called once interpolate() or
+     *  deserialize() has written them (their owner learns that they hold
+     *  a known state). */
+    void
+    add(const DoFHandler<dim>       &dof_handler,
+        const std::vector<Vector *> &vectors,
+        const std::function<void()> &written);
+
     /** The same for block vectors, whose owner sizes them on the new DoFs. */
     void
     add(const DoFHandler<dim>            &dof_handler,
@@ -87,13 +95,15 @@ namespace levelsinter
       const DoFHandler<dim>     *dof_handler;
       std::vector<VectorType *>  vectors;
       std::unique_ptr<Transfer>  transfer;
+      std::vector<std::function<void()>> written;
     };
     std::vector<std::variant<Entry<Vector>, Entry<BlockVector>>> entries;
 
     template <class VectorType>
     void
     add_entry(const DoFHandler<dim>           &dof_handler,
-              const std::vector<VectorType *> &vectors);
+              const std::vector<VectorType *> &vectors,
+              const std::function<void()>     &written = {});
 
     // A SolutionTransfer for the entry, given its vectors for a mesh change
     // or a checkpoint.

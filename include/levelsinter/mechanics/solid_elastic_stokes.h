@@ -182,7 +182,7 @@ namespace levelsinter
     DoFHandler<dim>                     solid_dofs;
     bool                                solid_dofs_current = false;
     // The cells' location on the level set of the last fit_to().
-    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
+    std::shared_ptr<const NonMatching::MeshClassifier<dim>> classifier;
     std::vector<IndexSet>               owned_partitioning;
     std::vector<IndexSet>               relevant_partitioning;
     AffineConstraints<double>           constraints;

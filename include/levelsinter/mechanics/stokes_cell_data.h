@@ -272,7 +272,7 @@ namespace levelsinter
     const hp::QCollection<1>   cut_quadrature;
     // The extended pressure: each phase's pressure shape functions.
     std::array<std::vector<unsigned int>, 2> phase_pressure_dofs;
-    std::unique_ptr<NonMatching::MeshClassifier<dim>> classifier;
+    std::shared_ptr<const NonMatching::MeshClassifier<dim>> classifier;
     // The cut cells of the extended pressure: CutCellRules on plane scenes
     // (no FEValues built per cut cell), NonMatching::FEValues on
     // axisymmetric ones and for the sharp surface of the other spaces.
