@@ -504,6 +504,43 @@ namespace levelsinter
   }
 
   template <int dim>
+  std::string
+  NormalGradientExtension<dim>::worst_row(const LevelSetField<dim> &level_set,
+                                          const Vector             &rhs,
+                                          const Vector &solution) const
+  {
+    const auto    &owned = level_set.locally_owned();
+    const MPI_Comm comm  = level_set.dof_handler().get_communicator();
+    Vector         residual(owned, comm);
+    matrix.vmult(residual, solution);
+    residual.sadd(-1., 1., rhs);
+    // The owned node with the largest residual, then the largest over the
+    // ranks.
+    std::pair<double, Point<dim>> worst(-1., Point<dim>());
+    for (const auto &cell : level_set.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const auto i = cell->vertex_dof_index(v, 0);
+            if (owned.is_element(i) && std::abs(residual(i)) > worst.first)
+              worst = {std::abs(residual(i)), cell->vertex(v)};
+          }
+    for (const auto &other : Utilities::MPI::all_gather(comm, worst))
+      if (other.first > worst.first)
+        worst = other;
+    std::ostringstream message;
+    message << "the largest residual is at x = (" << worst.second
+            << "). Measured on the two grains by volume diffusion (xi as the "
+               "boundary flux): the band's nodal normals there had turned "
+               "within a cell, after xi and then the level set grew a "
+               "sawtooth from one node to the next along a stretch where the "
+               "interface ran along a grid line; a smaller step did not "
+               "help, nor did more iterations (doc/validation.md, \"Volume "
+               "diffusion: the fillet's foot\")";
+    return message.str();
+  }
+
+  template <int dim>
   unsigned int
   NormalGradientExtension<dim>::carry(const LevelSetField<dim> &level_set,
                                       const Vector             &fixed,
@@ -538,9 +575,8 @@ namespace levelsinter
                          "(Eq. 110-111) did not converge in "
                       << e.last_step << " iterations (residual "
                       << std::scientific << std::setprecision(2)
-                      << e.last_residual
-                      << "); raise 'Volume diffusion/Maximum solver "
-                         "iterations'";
+                      << e.last_residual << "); "
+                      << worst_row(level_set, *rhs, solutions.back());
               throw std::runtime_error(message.str());
             }
         iterations += control.last_step();
