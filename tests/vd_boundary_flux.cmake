@@ -59,8 +59,10 @@ add_test(NAME volume_diffusion_flux_total_cylinder_mode2_2d
 # are flux sources only where the solid is convex in their patch, so the
 # neck's foot is read from inside, and (session 28) inner nodes within a
 # quarter cell of a concave interface are no sources either. Measured:
-# x/R 0.2307 -> 0.3978 (x 1.724, 44 steps, 42 s CPU; before the inner
-# rule x 1.737, 43 steps). With session 26's one-sheet test (|mean n| >= 0.9)
+# x/R 0.2307 -> 0.4275 (x 1.853, 41 steps; session 29: the inner nodes at
+# a concave foot take the mean of their patch's sources instead of an
+# unreached 0; session 28, with the holes, x 1.724, 44 steps, 42 s CPU;
+# before the inner rule x 1.737, 43 steps). With session 26's one-sheet test (|mean n| >= 0.9)
 # x 1.560, with growth stalling below each grid node the foot passed
 # (x/R 0.347-0.351 over t = 0.0025-0.004 s), and with every node with
 # interface support a source x 1.157 (the stall at 0.266; doc/validation.md,
@@ -156,7 +158,9 @@ set_tests_properties(${FLUX_STUDIES} PROPERTIES LABELS validation-long)
 set(VD_FILLET
   ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_filleted_volume_diffusion_2d.prm)
 # CI: R/h = 12.8 to t = 0.005 s (334 steps). Measured: x/R 0.2996 ->
-# 0.3671 (x 1.225), |dV/V| 1.6e-7, 44.5 s CPU (loaded cores). With
+# 0.3749 (x 1.251), |dV/V| 1.4e-7, 38 s CPU (session 29: the inner nodes
+# at the concave foot take the mean of their patch's sources; session 28,
+# with xi = 0 at them and the outer nodes above, x 1.225). With
 # the inner nodes at the concave foot as sources (the rule before) x 1.210:
 # the neck stood still at its first grid node (below a fifth of its mean
 # speed from t = 1.03 to 1.32 ms; at R/h = 25.6 from 1.6 ms to beyond

@@ -13,6 +13,7 @@
 #include <levelsinter/level_set/level_set_filter.h>
 
 #include <array>
+#include <string>
 #include <vector>
 
 namespace levelsinter
@@ -177,6 +178,14 @@ namespace levelsinter
     // Rows of the nodes with @p fixed > 0 keep the data (Dirichlet).
     void
     assemble(const LevelSetField<dim> &level_set, const Vector &fixed);
+
+    // After a failed solve of the assembled matrix for @p rhs: where the
+    // residual of @p solution is largest (all ranks) and what that meant
+    // where it was measured, for the error message.
+    std::string
+    worst_row(const LevelSetField<dim> &level_set,
+              const Vector             &rhs,
+              const Vector             &solution) const;
 
     // Assemble with the current normals and carry each of @p data along
     // them; returns the GMRES iterations.
