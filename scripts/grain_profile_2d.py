@@ -22,8 +22,10 @@ radius from the line of centres. Printed:
 - the distance r - R_f of the interface from the far circle in bands of
   zeta, the distance from the plane (a groove near the triple line shows
   as r < R_f at small zeta);
-- the area between the far circle and the interface at zeta < 1.5 L (the
-  solid the far circle counts and the shape does not), per triple line.
+- the area between the far circle and the interface from the points
+  nearest the plane to zeta = 1.5 L (the solid the far circle counts and
+  the shape does not), per triple line, and where the far circle meets
+  the plane (against the rays' a of grain_boundaries.csv).
 OUT.csv: per interface point zeta, rho, the polar angle about the far
 centre (degrees from the line of centres), r - R_f and the nodal
 curvature.
@@ -134,20 +136,23 @@ for low, high in ((0, 0.25), (0.25, 0.5), (0.5, 1), (1, 1.5), (1.5, 2),
         print("%4.2f-%4.2f  %6d  %+8.4f %+8.4f" %
               (low, high, inside.sum(), r.mean(), r.min()))
 
-# The area between the far circle and the interface over 0 < zeta < 1.5 L
-# on one side of the line of centres (one triple line): the far circle's
-# rho_f(zeta) less the interface's, integrated in zeta.
+# The area between the far circle and the interface over the points
+# nearest the plane to zeta = 1.5 L on one side of the line of centres
+# (one triple line): the far circle's rho_f(zeta) less the interface's,
+# integrated in zeta (positive: the far circle holds solid the shape
+# does not). The points on the plane itself are the rays' a (the
+# application's radius column), not read here.
 near = (zeta < inner) & (rho > neck / 2)
 z = np.sort(zeta[near])
 r = rho[near][np.argsort(zeta[near])]
-grid = np.linspace(0, inner, 200)
+grid = np.linspace(z[0], inner, 200)
 rho_f = rc + np.sqrt(np.maximum(radius ** 2 - (grid - zc) ** 2, 0))
-rho_i = np.interp(grid, z, r)
-deficit = np.trapz(rho_f - rho_i, grid)
-print("area between the far circle and the interface at zeta < 1.5 L, per "
-      "triple line: %.4g (%.4g h_min^2); at the plane rho_f - rho = %.4g "
-      "(%.3f h_min)" % (deficit, deficit / h_min ** 2, rho_f[0] - rho_i[0],
-                        (rho_f[0] - rho_i[0]) / h_min))
+deficit = np.trapz(rho_f - np.interp(grid, z, r), grid)
+print("area between the far circle and the interface at %.3g L < zeta < "
+      "1.5 L, per triple line: %.4g (%.4g h_min^2); the far circle meets "
+      "the plane at rho = %.6g" % (z[0] / args.kernel, deficit,
+                                   deficit / h_min ** 2,
+                                   rc + math.sqrt(radius ** 2 - zc ** 2)))
 
 if args.csv:
     with open(args.csv, "w") as out:
