@@ -71,21 +71,24 @@ if a check fails.
       errors, psi's range and the rigid grains' drift. SHARE, --row: as
       `equilibrium`'s --share, --row.
   check_grains.py settling OUT.csv T_FROM LABEL RUN RATIO BODY_DIM EVERY ...
+                           [--share S]
       per run (every EVERY-th row at time >= T_FROM): the largest errors
       of `settled`, psi's range and mean, the rigid grains' mean approach
       rate and their centre distance's change, the solid's volume_change
-      at the last row; writes OUT.csv.
+      at the last row; writes OUT.csv. --share: as `equilibrium`'s, for
+      every run.
   check_grains.py bias OUT.csv T_FROM T_TO LABEL RUN ...
       per run, the means over the rows with T_FROM <= time <= T_TO of
       what the contact law reads: the volume correction's speed, the
       neck-root curvature kappa' and the explicit one against the fitted
       circles' 1/R; the rigid approach rate's mean and the centre
       distance's change; writes OUT.csv.
-  check_grains.py swing RUN RATIO BODY_DIM T_FROM
+  check_grains.py swing RUN RATIO BODY_DIM T_FROM [--share S]
       the pair of `equilibrium` over the rows with time >= T_FROM: the
       range and mean of R's, a's (near circles and rays) and d's errors
       and their mean change between consecutive rows (the swing of single
-      rows), psi's and the rigid approach rate's range and mean.
+      rows), psi's and the rigid approach rate's range and mean. --share:
+      as `equilibrium`'s.
   check_grains.py resting RUN T_FROM [LIMIT]
       the first contact's rigid approach rate over the steps with time >=
       T_FROM: its range and mean change between steps (the explicit
@@ -368,7 +371,7 @@ def settling(run, ratio, body, t_from, every=1, share=1, grains=0):
             table[0][9], rate, drift, volume_change)
 
 
-def settling_table(out, t_from, cases):
+def settling_table(out, t_from, cases, share=1):
     """cases: LABEL RUN RATIO BODY_DIM EVERY, five words each."""
     with open(out, "w") as f:
         f.write("case,run,t_from,rows,R_error_max,a_error_max,d_error_max,"
@@ -376,7 +379,8 @@ def settling_table(out, t_from, cases):
                 "rigid_distance_change,volume_change_end\n")
         for k in range(0, len(cases), 5):
             label, run, ratio, body, every = cases[k:k + 5]
-            values = settling(run, float(ratio), int(body), t_from, int(every))
+            values = settling(run, float(ratio), int(body), t_from, int(every),
+                              share)
             f.write("%s,%s,%g," % (label, os.path.basename(run), t_from) +
                     ",".join("%.5g" % v for v in values) + "\n")
             print(label, " ".join("%.4g" % v for v in values))
@@ -438,13 +442,14 @@ def settled(run, ratio, body, t_from, tolerance, tolerance_degrees, share=1,
              tolerance_degrees)
 
 
-def swing(run, ratio, body, t_from):
+def swing(run, ratio, body, t_from, share=1):
     """The pair's rows with time >= t_from against the exact state: per
     quantity (R, a where the near circles meet the plane, a of the rays,
     d) the range and mean of the relative error (per cent) and the mean
     change between consecutive rows; psi's range and mean, the rigid
     approach rate's range and mean."""
-    table = [r for r in equilibrium_table(run, ratio, body) if r[1] >= t_from]
+    table = [r for r in equilibrium_table(run, ratio, body, share)
+             if r[1] >= t_from]
     if len(table) < 2:
         fail("fewer than two rows at t >= %g" % t_from)
     columns = (("R", 2, 6), ("a", 3, 7), ("a, rays", 10, 7), ("d", 4, 8))
@@ -599,6 +604,13 @@ if __name__ == "__main__":
         k = args.index("--row")
         grains = int(args[k + 1])
         del args[k:k + 2]
+    # --share S (equilibrium, settling, swing): the domain's share of the
+    # pair.
+    share = 1
+    if "--share" in args:
+        k = args.index("--share")
+        share = float(args[k + 1])
+        del args[k:k + 2]
     if mode == "law":
         law(args[0], float(args[1]), float(args[2]), int(args[3]), float(args[4]))
     elif mode == "densify":
@@ -612,11 +624,11 @@ if __name__ == "__main__":
     elif mode == "equilibrium":
         options = dict(zip(args[3::2], args[4::2]))
         equilibrium(args[0], float(args[1]), int(args[2]), options.get("--csv"),
-                    float(options.get("--share", 1)), grains)
+                    share, grains)
     elif mode == "conserved":
         conserved(args[0], float(args[1]))
     elif mode == "settling":
-        settling_table(args[0], float(args[1]), args[2:])
+        settling_table(args[0], float(args[1]), args[2:], share)
     elif mode == "bias":
         bias(args[0], float(args[1]), float(args[2]), args[3:])
     elif mode == "settled":
@@ -625,7 +637,7 @@ if __name__ == "__main__":
     elif mode == "angle":
         angle(args[0], *map(float, args[1:4]))
     elif mode == "swing":
-        swing(args[0], float(args[1]), int(args[2]), float(args[3]))
+        swing(args[0], float(args[1]), int(args[2]), float(args[3]), share)
     elif mode == "resting":
         resting(args[0], float(args[1]),
                     float(args[2]) if len(args) > 2 else None)

@@ -335,21 +335,29 @@ namespace levelsinter
   }
 
   template <int dim>
+  double
+  GrainBoundaryDiffusion<dim>::equilibrium_neck(const unsigned int i,
+                                                const unsigned int j) const
+  {
+    // Two grains of radius r end as truncated discs or spheres meeting in
+    // a grain boundary of radius about r sin(psi/2), r the smaller radius.
+    return std::min(radii[i], radii[j]) * parameters.sin_half_dihedral_angle();
+  }
+
+  template <int dim>
   void
   GrainBoundaryDiffusion<dim>::check_representable() const
   {
-    const double sin_half = parameters.sin_half_dihedral_angle();
     for (const auto &b : boundaries)
       {
-        // Two grains of radius r end as truncated discs or spheres meeting
-        // in a grain boundary of radius about r sin(psi/2). The triple
-        // line's kernels (deposition, root curvature) have the half-width
-        // l: a neck narrower than l is not resolved, and the contact law
-        // then cycles between a neck that snaps open and one that narrows
-        // (measured at gamma_gb / gamma_s = 1.9, R/h = 16: doc/validation.md,
-        // "Settling the pair: the step's accuracy, clear stops").
-        const double r = std::min(radii[b.i], radii[b.j]);
-        if (r * sin_half < deposition_width)
+        // The triple line's kernels (deposition, root curvature) have the
+        // half-width l: a neck narrower than l is not resolved, and the
+        // contact law then cycles between a neck that snaps open and one
+        // that narrows (measured at gamma_gb / gamma_s = 1.9, R/h = 16:
+        // doc/validation.md, "Settling the pair: the step's accuracy,
+        // clear stops").
+        const double neck = equilibrium_neck(b.i, b.j);
+        if (neck < deposition_width)
           {
             std::ostringstream message;
             message << "grains " << b.i << " and " << b.j
@@ -357,7 +365,7 @@ namespace levelsinter
                     << parameters.energy_ratio
                     << " their equilibrium grain boundary has the radius r "
                        "sin(psi/2) = "
-                    << r * sin_half << " (r = " << r
+                    << neck << " (r = " << std::min(radii[b.i], radii[b.j])
                     << "), less than the triple line's kernel half-width "
                        "l = Deposition width x h_min = "
                     << deposition_width
@@ -568,14 +576,13 @@ namespace levelsinter
       {
         if (trial_start_time == 0)
           {
-            const double sin_half  = parameters.sin_half_dihedral_angle();
             double       narrowest = std::numeric_limits<double>::max();
             unsigned int narrow    = 0;
             for (const auto &contact : last_contacts)
               {
-                const double neck = std::min(radii[contact.boundary.i],
-                                             radii[contact.boundary.j]) *
-                                    sin_half / deposition_width;
+                const double neck =
+                  equilibrium_neck(contact.boundary.i, contact.boundary.j) /
+                  deposition_width;
                 narrowest = std::min(narrowest, neck);
                 narrow += (neck < settled_neck_kernels);
               }

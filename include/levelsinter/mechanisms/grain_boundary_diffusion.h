@@ -172,6 +172,11 @@ namespace levelsinter
     void
     compute(const LevelSetField<dim> &alpha, const double dt);
 
+    // The radius r sin(psi/2) of the grain boundary of grains @p i and
+    // @p j at their equilibrium, r the smaller grain's radius.
+    double
+    equilibrium_neck(const unsigned int i, const unsigned int j) const;
+
     // Stops the run, with what the model cannot represent, where a grain
     // boundary's equilibrium neck is narrower than the triple-line kernel
     // or a grain boundary has reached a grain's centre.
