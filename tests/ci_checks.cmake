@@ -141,29 +141,6 @@ set_tests_properties(volume_correction_auto_csf_curvature PROPERTIES
   PASS_REGULAR_EXPRESSION "mechanisms: viscous flow\n"
   FAIL_REGULAR_EXPRESSION "volume correction")
 
-# --- The partition among ranks ---------------------------------------------
-# One grain of radius 0.2 at (0.25, 0.25) of the unit square
-# (two_grains_volume_diffusion_2d.prm), 2 ranks: p4est's curve gives the
-# lower half of the square, and so the whole grain, to one rank. With equal
-# weights the larger rank holds 1.435x the mean of the cells with solid;
-# with `Partition weights = 1, 4, 8` 1.148x (measured), its cells 1.19x the
-# mean and the weighted work equal. Limits: at least 1.3 unweighted (the
-# scene is unbalanced, so the weighted check means something) and below
-# 1.2 weighted (weights ignored would read 1.435).
-set(ONE_GRAIN --overwrite --set "Geometry/Particles=0.25, 0.25, 0.2"
-  --set "Time/Maximum steps=2" --set "Output/Field formats=none"
-  ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_volume_diffusion_2d.prm)
-add_test(NAME partition_by_cells_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2
-  $<TARGET_FILE:levelsinter> --set "Output/Directory=partition_by_cells"
-  ${ONE_GRAIN})
-set_tests_properties(partition_by_cells_np2 PROPERTIES
-  PASS_REGULAR_EXPRESSION "cells 1\\.000, cells with solid (1\\.[3-9]|2\\.)[^\n]*\n.*done: 2 steps")
-add_test(NAME partition_by_weights_np2 COMMAND ${MPIRUN} ${MPIRUN_FLAGS} -np 2
-  $<TARGET_FILE:levelsinter> --set "Output/Directory=partition_by_weights"
-  --set "Mesh refinement/Partition weights=1, 4, 8" ${ONE_GRAIN})
-set_tests_properties(partition_by_weights_np2 PROPERTIES
-  PASS_REGULAR_EXPRESSION "cells with solid 1\\.[01][0-9]*, [^\n]*weighted work 1\\.00[0-9]*\n.*done: 2 steps")
-
 # --- Step rejection ----------------------------------------------------------
 # A step whose solver fails is retried with half the step: with at most 6
 # GMRES iterations (the transport needs 6-7 at CFL 0.5) some steps fail and

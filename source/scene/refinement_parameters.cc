@@ -1,9 +1,5 @@
-#include <deal.II/base/utilities.h>
-
 #include <levelsinter/scene/parameter_entries.h>
 #include <levelsinter/scene/refinement_parameters.h>
-
-#include <algorithm>
 
 namespace levelsinter
 {
@@ -58,13 +54,6 @@ namespace levelsinter
         "With Curvature refinement levels > 0: how many cells a curvature "
         "radius 1/k must span before the refinement stops. A cell is "
         "coarsened again once its parent would span twice as many.");
-      prm.declare_entry(
-        "Partition weights",
-        "1, 1, 1",
-        Patterns::List(Patterns::Integer(1, 1000), 3, 3, ","),
-        "The work of a cell without solid, a cell inside the solid and a "
-        "cell the interface cuts, for the partition of the mesh among MPI "
-        "ranks (1, 1, 1: equal cells per rank).");
     }
     prm.leave_subsection();
   }
@@ -79,9 +68,6 @@ namespace levelsinter
     adapt_interval   = prm.get_integer("Adapt interval");
     curvature_levels = prm.get_integer("Curvature refinement levels");
     cells_per_curvature_radius = prm.get_double("Cells per curvature radius");
-    const auto weights         = Utilities::string_to_int(
-      Utilities::split_string_list(prm.get("Partition weights"), ','));
-    std::copy(weights.begin(), weights.end(), partition_weights.begin());
     prm.leave_subsection();
     if (max_level + curvature_levels > 20)
       fail_entry("Mesh refinement/Curvature refinement levels",

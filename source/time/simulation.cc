@@ -101,10 +101,6 @@ namespace levelsinter
                    TimerOutput::cpu_and_wall_times)
     , tria(comm,
            Triangulation<dim>::limit_level_difference_at_vertices)
-    , load_balance(tria,
-                   {scene.refinement.partition_weights[0],
-                    scene.refinement.partition_weights[1],
-                    scene.refinement.partition_weights[2]})
     , level_set_filter(scene.level_set.filter, scene.level_set.filter_thickness)
     , alpha(tria, SceneMeasure(scene.geometry.axisymmetric))
     , velocity(tria)
@@ -193,25 +189,9 @@ namespace levelsinter
         if (pass > band_refinement.finest_level() - scene.refinement.min_level ||
             !band_refinement.mark_cells(tria, alpha))
           break;
-        load_balance.classify(alpha);
         tria.execute_coarsening_and_refinement();
       }
     check_particles_refined();
-  }
-
-  template <int dim>
-  void
-  Simulation<dim>::report_partition() const
-  {
-    if (Utilities::MPI::n_mpi_processes(comm) < 2)
-      return;
-    const auto ratio = load_balance.imbalance(alpha);
-    pcout << "partition over " << Utilities::MPI::n_mpi_processes(comm)
-          << " ranks, largest rank against the mean: cells " << std::fixed
-          << std::setprecision(3) << ratio.cells << ", cells with solid "
-          << ratio.solid_cells << ", cut cells " << ratio.cut_cells
-          << ", weighted work " << ratio.work << std::defaultfloat
-          << std::endl;
   }
 
   template <int dim>
@@ -274,7 +254,6 @@ namespace levelsinter
       mechanism->setup(alpha);
     transport.setup_system(alpha);
     h_min = finest_cell_size(tria);
-    report_partition();
     initialised = true;
   }
 
@@ -460,7 +439,6 @@ namespace levelsinter
       for (auto &mechanism : mechanisms)
         mechanism->add_state(alpha, state);
       state.prepare_for_coarsening_and_refinement();
-      load_balance.classify(alpha);
       tria.execute_coarsening_and_refinement();
       alpha.setup_dofs();
     }

@@ -2,8 +2,6 @@
 
 #include <deal.II/base/parameter_handler.h>
 
-#include <array>
-
 namespace levelsinter
 {
   using namespace dealii;
@@ -32,7 +30,5 @@ namespace levelsinter
     // (0 = off) and the cells wanted across a curvature radius there.
     unsigned int curvature_levels           = 0;
     double       cells_per_curvature_radius = 4;
-    // The work of a void, a solid and a cut cell for the MPI partition.
-    std::array<unsigned int, 3> partition_weights{{1, 1, 1}};
   };
 } // namespace levelsinter

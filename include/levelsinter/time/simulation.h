@@ -9,7 +9,6 @@
 #include <levelsinter/analysis/postprocessor.h>
 #include <levelsinter/analysis/small_pore_closure.h>
 #include <levelsinter/grid/interface_band_refinement.h>
-#include <levelsinter/grid/load_balance.h>
 #include <levelsinter/io/field_output.h>
 #include <levelsinter/io/metrics_log.h>
 #include <levelsinter/level_set/convective_reinitialization.h>
@@ -169,11 +168,6 @@ namespace levelsinter
     // in cells coarser than the maximum level.
     void
     check_particles_refined() const;
-
-    // On two or more ranks: how evenly the partition spreads the cells,
-    // the cells with solid, the cut cells and the weighted work.
-    void
-    report_partition() const;
     void
     adapt_mesh();
     void
@@ -228,7 +222,6 @@ namespace levelsinter
     ConditionalOStream                        pcout;
     TimerOutput                               timer_output;
     parallel::distributed::Triangulation<dim> tria;
-    LoadBalance<dim>                          load_balance;
     LevelSetFilter                            level_set_filter;
     LevelSetField<dim>                        alpha;
     VelocityField<dim>                        velocity;
