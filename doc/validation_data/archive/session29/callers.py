@@ -1,25 +1,23 @@
-import sys, collections
-# Samples containing FRAME: the caller frame just above its outermost occurrence.
+import collections
+import itertools
+import sys
+# callers.py FRAME STACKS [N]: of the samples of `perf script -F ip,sym
+# --no-inline` (STACKS) that contain FRAME, the share each levelsinter
+# frame above its outermost occurrence takes (the N largest).
 frame, path = sys.argv[1], sys.argv[2]
-stacks, cur = [], []
-for line in open(path):
-    s = line.strip()
-    if not s:
-        if cur: stacks.append(cur); cur = []
+lines = (line.strip() for line in open(path))
+stacks = [[(line.split(None, 1) + ['?'])[1] for line in group]
+          for nonempty, group in itertools.groupby(lines, key=bool) if nonempty]
+hit = collections.Counter()
+hits = 0
+for stack in stacks:
+    where = [i for i, f in enumerate(stack) if frame in f]
+    if not where:
         continue
-    parts = s.split(None, 1)
-    cur.append(parts[1] if len(parts) > 1 else '?')
-if cur: stacks.append(cur)
+    hits += 1
+    caller = next((f for f in stack[max(where) + 1:] if 'levelsinter' in f), '?')
+    hit[caller[:110]] += 1
 n = len(stacks)
-hit = collections.Counter(); tot = 0
-for st in stacks:
-    idx = [i for i, f in enumerate(st) if frame in f]
-    if not idx: continue
-    tot += 1
-    i = max(idx)
-    # the first levelsinter frame above it
-    j = i + 1
-    while j < len(st) and 'levelsinter' not in st[j]: j += 1
-    hit[(st[j] if j < len(st) else '?')[:110]] += 1
-print(f"{frame}: {100*tot/n:.2f} % of {n}")
-for k, v in hit.most_common(int(sys.argv[3]) if len(sys.argv) > 3 else 12): print(f"  {100*v/n:6.2f} %  {k}")
+print(f"{frame}: {100 * hits / n:.2f} % of {n}")
+for name, count in hit.most_common(int(sys.argv[3]) if len(sys.argv) > 3 else 12):
+    print(f"  {100 * count / n:6.2f} %  {name}")

@@ -4,8 +4,8 @@ volume-diffusion velocity's normal component and xi, along a line.
 usage: near_point.py FIELDS.vtu x y z radius"""
 import sys
 import numpy as np
-sys.path.insert(0, '.')
-from vtu_hexes import read_hexes
+sys.path.insert(0, '../packing_154_s28/unsourced_8')
+from where_in_fields import read_hexes
 pts, cells, f = read_hexes(sys.argv[1])
 c = np.array([float(v) for v in sys.argv[2:5]]); r = float(sys.argv[5])
 print(sorted(f.keys()))

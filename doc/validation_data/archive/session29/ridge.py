@@ -4,8 +4,8 @@ each step's VTU, alpha and xi at y = Y and at the grid lines y = Y -+ h,
 at the node of the row nearest the interface. usage: ridge.py x Y z h VTU..."""
 import sys
 import numpy as np
-sys.path.insert(0, '.')
-from vtu_hexes import read_hexes
+sys.path.insert(0, '../packing_154_s28/unsourced_8')
+from where_in_fields import read_hexes
 x, Y, z, h = map(float, sys.argv[1:5])
 for path in sys.argv[5:]:
     pts, cells, f = read_hexes(path)

@@ -56,61 +56,66 @@ def gaps(points, spheres):
     return np.sort(d - spheres[None, :, 3], axis=1)
 
 
-what, path, particles, h = sys.argv[1], sys.argv[2], sys.argv[3], float(
-    sys.argv[4])
-P, C, F = read_hexes(path)
-spheres = read_spheres(particles)
-a = F["alpha"][:, 0][C]
-interface = (a.min(1) <= 0) & (a.max(1) > 0)
+def main():
+    what, path, particles, h = sys.argv[1], sys.argv[2], sys.argv[3], float(
+        sys.argv[4])
+    P, C, F = read_hexes(path)
+    spheres = read_spheres(particles)
+    a = F["alpha"][:, 0][C]
+    interface = (a.min(1) <= 0) & (a.max(1) > 0)
 
-if what == "unsourced":
-    unsourced = interface & (np.abs(F["volume_diffusion_xi"][:, 0][C]).min(1)
-                             == 0)
-    centre = P[C].mean(1)
-    size = P[C][:, :, 0].max(1) - P[C][:, :, 0].min(1)
-    order = np.argsort(centre[:, 0])
+    if what == "unsourced":
+        unsourced = interface & (np.abs(F["volume_diffusion_xi"][:, 0][C]).min(1)
+                                 == 0)
+        centre = P[C].mean(1)
+        size = P[C][:, :, 0].max(1) - P[C][:, :, 0].min(1)
+        order = np.argsort(centre[:, 0])
 
-    def containing(p):
-        lo = np.searchsorted(centre[order, 0], p[0] - 8.4 * h)
-        hi = np.searchsorted(centre[order, 0], p[0] + 8.4 * h)
-        idx = order[lo:hi]
-        inside = np.all(np.abs(centre[idx] - p) <= size[idx, None] / 2 + 1e-9,
-                        axis=1)
-        return idx[inside][0] if inside.any() else -1
+        def containing(p):
+            lo = np.searchsorted(centre[order, 0], p[0] - 8.4 * h)
+            hi = np.searchsorted(centre[order, 0], p[0] + 8.4 * h)
+            idx = order[lo:hi]
+            inside = np.all(np.abs(centre[idx] - p) <= size[idx, None] / 2 + 1e-9,
+                            axis=1)
+            return idx[inside][0] if inside.any() else -1
 
-    print(f"interface cells {interface.sum()}, unsourced {unsourced.sum()}")
-    for name, mask in (("unsourced", unsourced), ("all interface", interface)):
-        second = gaps(centre[mask], spheres)[:, 1]
-        print(name, "cell sizes / h:",
-              np.unique(np.round(size[mask] / h, 2), return_counts=True))
-        for limit in (1, 2, 3, 4, 6, 100):
-            print(f"  second sphere within {limit} h of the centre: "
-                  f"{np.mean(second < limit * h) * 100:.0f} %")
-    for name, mask in (("unsourced", unsourced),
-                       ("sourced interface", interface & ~unsourced)):
-        print(name)
-        rows = Counter()
-        for cell in np.flatnonzero(mask)[:300]:
-            c = centre[cell]
-            nearest = spheres[np.argmin(np.linalg.norm(c - spheres[:, :3],
-                                                       axis=1) - spheres[:, 3])]
-            n = (nearest[:3] - c) / np.linalg.norm(nearest[:3] - c)
-            sizes = []
-            for k in range(1, 8):
-                j = containing(c + k * h * n)
-                sizes.append(round(size[j] / h) if j >= 0 else -1)
-            rows[tuple(sizes)] += 1
-        for sizes, count in rows.most_common(6):
-            print("  sizes/h at depth 1..7 h:", sizes, count)
-elif what == "speed":
-    nodes = np.unique(C[interface].ravel())
-    for name in [k for k in F if 'velocity' in k and F[k].shape[1] >= 3]:
-        speed = np.linalg.norm(F[name][nodes, :3], axis=1)
-        print(name, "max", speed.max())
-        for n in nodes[np.argsort(speed)[-8:]][::-1]:
-            d = gaps(P[n][None, :], spheres)[0]
-            print(f"   |v| {np.linalg.norm(F[name][n, :3]):8.3f} at "
-                  f"{np.round(P[n], 4)}  alpha {F['alpha'][n, 0]:+.4f}  gaps "
-                  f"to spheres {d[0] / h:+.2f} h, {d[1] / h:+.2f} h")
-else:
-    sys.exit(__doc__)
+        print(f"interface cells {interface.sum()}, unsourced {unsourced.sum()}")
+        for name, mask in (("unsourced", unsourced), ("all interface", interface)):
+            second = gaps(centre[mask], spheres)[:, 1]
+            print(name, "cell sizes / h:",
+                  np.unique(np.round(size[mask] / h, 2), return_counts=True))
+            for limit in (1, 2, 3, 4, 6, 100):
+                print(f"  second sphere within {limit} h of the centre: "
+                      f"{np.mean(second < limit * h) * 100:.0f} %")
+        for name, mask in (("unsourced", unsourced),
+                           ("sourced interface", interface & ~unsourced)):
+            print(name)
+            rows = Counter()
+            for cell in np.flatnonzero(mask)[:300]:
+                c = centre[cell]
+                nearest = spheres[np.argmin(np.linalg.norm(c - spheres[:, :3],
+                                                           axis=1) - spheres[:, 3])]
+                n = (nearest[:3] - c) / np.linalg.norm(nearest[:3] - c)
+                sizes = []
+                for k in range(1, 8):
+                    j = containing(c + k * h * n)
+                    sizes.append(round(size[j] / h) if j >= 0 else -1)
+                rows[tuple(sizes)] += 1
+            for sizes, count in rows.most_common(6):
+                print("  sizes/h at depth 1..7 h:", sizes, count)
+    elif what == "speed":
+        nodes = np.unique(C[interface].ravel())
+        for name in [k for k in F if 'velocity' in k and F[k].shape[1] >= 3]:
+            speed = np.linalg.norm(F[name][nodes, :3], axis=1)
+            print(name, "max", speed.max())
+            for n in nodes[np.argsort(speed)[-8:]][::-1]:
+                d = gaps(P[n][None, :], spheres)[0]
+                print(f"   |v| {np.linalg.norm(F[name][n, :3]):8.3f} at "
+                      f"{np.round(P[n], 4)}  alpha {F['alpha'][n, 0]:+.4f}  gaps "
+                      f"to spheres {d[0] / h:+.2f} h, {d[1] / h:+.2f} h")
+    else:
+        sys.exit(__doc__)
+
+
+if __name__ == "__main__":
+    main()
