@@ -153,8 +153,8 @@ namespace levelsinter
      * Which cells and faces the interface of the current alpha cuts
      * (NonMatching::MeshClassifier, reclassified). Made at the first call
      * after alpha changed and shared by every cut-cell integration and
-     * solver on that alpha: a classification reads alpha on every cell and
-     * face, and a packing step asked for five (doc/performance.md,
+     * solver on that alpha: a classification reads alpha on every cell
+     * and face, and each of them used to make its own (doc/performance.md,
      * "Session 29"). A holder may keep it past a change of alpha; it then
      * describes the alpha it was made for.
      */
