@@ -107,7 +107,8 @@ namespace
     const std::shared_ptr<const NonMatching::MeshClassifier<2>> &changed_from)
   {
     const auto shared = level_set.classifier();
-    bool       ok     = shared == level_set.classifier() && shared != changed_from;
+    bool       ok =
+      shared == level_set.classifier() && shared != changed_from;
     NonMatching::MeshClassifier<2> fresh(level_set.dof_handler(),
                                          level_set.alpha());
     fresh.reclassify();
