@@ -62,28 +62,18 @@ namespace levelsinter
       if (v->size() != dof_handler.n_dofs())
         throw std::logic_error(
           "StateTransfer::add: a vector is not sized to its DoFHandler");
+    // One entry per DoFHandler.
+    Entry<VectorType> *entry = nullptr;
     for (auto &variant : entries)
-      if (auto *entry = std::get_if<Entry<VectorType>>(&variant);
-          entry && entry->dof_handler == &dof_handler)
-        {
-          entry->vectors.insert(entry->vectors.end(),
-                                vectors.begin(),
-                                vectors.end());
-          if (written)
-            entry->written.push_back(written);
-          return;
-        }
-    entries.emplace_back(Entry<VectorType>{&dof_handler, vectors, nullptr, {}});
+      if (auto *e = std::get_if<Entry<VectorType>>(&variant);
+          e && e->dof_handler == &dof_handler)
+        entry = e;
+    if (!entry)
+      entry = &std::get<Entry<VectorType>>(
+        entries.emplace_back(Entry<VectorType>{&dof_handler, {}, nullptr, {}}));
+    entry->vectors.insert(entry->vectors.end(), vectors.begin(), vectors.end());
     if (written)
-      std::get<Entry<VectorType>>(entries.back()).written.push_back(written);
-  }
-
-  template <int dim>
-  void
-  StateTransfer<dim>::add(const DoFHandler<dim>       &dof_handler,
-                          const std::vector<Vector *> &vectors)
-  {
-    add_entry(dof_handler, vectors);
+      entry->written.push_back(written);
   }
 
   template <int dim>
@@ -100,7 +90,7 @@ namespace levelsinter
   StateTransfer<dim>::add(const DoFHandler<dim>            &dof_handler,
                           const std::vector<BlockVector *> &vectors)
   {
-    add_entry(dof_handler, vectors);
+    add_entry(dof_handler, vectors, {});
   }
 
   template <int dim>

@@ -52,18 +52,14 @@ namespace levelsinter
      * Keep @p vectors (ghosted, sized to @p dof_handler) across the next
      * mesh change. The DoFHandler must be the object the owner distributes
      * again afterwards, alive until interpolate(). The order of the calls
-     * is the order of a checkpoint's data: a restart repeats it.
+     * is the order of a checkpoint's data: a restart repeats it. If given,
+     * @p written is called once interpolate() or deserialize() has written
+     * them (their owner learns that they hold a known state).
      */
-    void
-    add(const DoFHandler<dim> &dof_handler, const std::vector<Vector *> &vectors);
-
-    /** The same, and @p written is called once interpolate() or
-     *  deserialize() has written them (their owner learns that they hold
-     *  a known state). */
     void
     add(const DoFHandler<dim>       &dof_handler,
         const std::vector<Vector *> &vectors,
-        const std::function<void()> &written);
+        const std::function<void()> &written = {});
 
     /** The same for block vectors, whose owner sizes them on the new DoFs. */
     void
@@ -103,7 +99,7 @@ namespace levelsinter
     void
     add_entry(const DoFHandler<dim>           &dof_handler,
               const std::vector<VectorType *> &vectors,
-              const std::function<void()>     &written = {});
+              const std::function<void()>     &written);
 
     // A SolutionTransfer for the entry, given its vectors for a mesh change
     // or a checkpoint.
