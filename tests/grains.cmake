@@ -840,6 +840,16 @@ grains_rest(${name} grains_equilibrium_axisymmetric.prm
   --set "Grain boundaries/Sharp contact radius=true")
 grains_check(${name}_settled ${name} settled ${name} 1 3 0.01 0.01 2)
 grains_check(${name}_law ${name} law ${name} 1 1 3 1e-6)
+# The axisymmetric pair relaxing from the scene's start (x/R = 0.22) at
+# R/h = 16 with the sharp contact radius, to t = 0.05 (541 steps, 24 s
+# CPU): over t >= 0.02 R, a, d within 0.10, 0.15, 0.45 %, psi 119.6-119.8
+# (the rays' a: 0.29, 1.33, 1.97 %, psi 118.1). Limits 1 % and 2 degrees.
+set(name grains_equilibrium_axisymmetric_relax_sharp)
+grains_run(${name} grains_equilibrium_axisymmetric.prm 3000 ${GRAINS_R16}
+  --set "Time/End time=0.05" --set "Grain boundaries/Deposition width=6"
+  --set "Grain boundaries/Implicit contact law=true"
+  --set "Grain boundaries/Sharp contact radius=true")
+grains_check(${name}_settled ${name} settled ${name} 1 3 0.02 0.01 2)
 # The 3D pair (R/h = 16, kink 2) from its exact end state with the sharp
 # contact radius (77 steps to t = 0.014, 200 s CPU, 310 MB): over t >=
 # 0.009 R, a, d within 0.32, 0.07, 0.49 %, psi 119.8-119.9 (the rays':
