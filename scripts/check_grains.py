@@ -110,6 +110,11 @@ if a check fails.
       every grain boundary: the dihedral angle where the circles meet,
       cos(psi/2) = d / (2 R), within TOLERANCE_DEGREES, the fitted radius
       and centre distance within RELATIVE_TOLERANCE of R and d.
+  check_grains.py disc RUN T_FROM RELATIVE_TOLERANCE
+      a 2D pair at gamma_gb = 0 (psi = 180 degrees): its end state is one
+      disc of the solid's area A; at every row of metrics.csv with time >=
+      T_FROM the interface length within RELATIVE_TOLERANCE of 2 sqrt(pi
+      A); prints the range and the rigid centres' distance over those rows.
 """
 import csv
 import math
@@ -562,6 +567,25 @@ def initial(run, radius, tolerance_degrees, tolerance):
             fail("fitted centre distance off by more than %g" % tolerance)
 
 
+def disc(run, t_from, tolerance):
+    metrics = [row for row in rows(run + "/metrics.csv")
+               if row["time"] >= t_from]
+    if not metrics:
+        fail("no row at t >= %g" % t_from)
+    error = [row["interface_area"] / (2 * math.sqrt(math.pi *
+                                                     row["solid_volume"])) - 1
+             for row in metrics]
+    distance = [row["centre_distance"] for row in
+                rows(run + "/grain_boundaries.csv") if row["time"] >= t_from]
+    print("disc: interface length against 2 sqrt(pi A) %+.3g to %+.3g over %d "
+          "rows at t >= %g; rigid centre distance %s" %
+          (min(error), max(error), len(error), t_from,
+           "%.4g to %.4g" % (min(distance), max(distance)) if distance else
+           "- (no grain boundary)"))
+    if not max(abs(e) for e in error) <= tolerance:
+        fail("the solid is not one disc to %g" % tolerance)
+
+
 def spacing(run, ratio, grains, d0, column, low, high, out=None):
     """The closed row's centre spacing d = d0 (1 + COLUMN) against the
     exact equilibrium's at each metrics row (the row's solid area): its
@@ -647,6 +671,8 @@ if __name__ == "__main__":
                       options.get("--csv"), float(options.get("--from", 0)),
                       float(options["--limit"]) if "--limit" in options
                       else None)
+    elif mode == "disc":
+        disc(args[0], float(args[1]), float(args[2]))
     elif mode == "initial":
         initial(args[0], *map(float, args[1:4]))
     elif mode == "spacing":

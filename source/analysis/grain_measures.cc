@@ -1,14 +1,10 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/mpi.h>
 
-#include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/vector.h>
-
 #include <levelsinter/analysis/grain_measures.h>
 #include <levelsinter/level_set/interface_measures.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -29,63 +25,6 @@ namespace levelsinter
           high = std::max(high, p[d]);
         }
       return high - low;
-    }
-
-    // Sums of the algebraic circle fit (Kasa) of points (zeta, rho) in the
-    // meridian plane of a grain boundary: minimise sum (z + D zeta + E rho
-    // + F)^2, z = zeta^2 + rho^2, weighted by the surface element.
-    constexpr unsigned int n_moments = 9;
-
-    void
-    add_moments(const double zeta, const double rho, const double w, double *m)
-    {
-      const double z = zeta * zeta + rho * rho;
-      const double terms[n_moments] = {
-        zeta * zeta, zeta * rho, zeta, rho * rho, rho, 1, z * zeta, z * rho, z};
-      for (unsigned int k = 0; k < n_moments; ++k)
-        m[k] += w * terms[k];
-    }
-
-    // The circle of the fit: (zeta_c, rho_c, R); NaN without enough
-    // points.
-    std::array<double, 3>
-    fitted_circle(const double *m)
-    {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      if (!(m[5] > 0))
-        return {{nan, nan, nan}};
-      FullMatrix<double> normal(3, 3), inverse(3, 3);
-      const double       entries[9] = {
-        m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5]};
-      normal.fill(entries);
-      if (!(std::abs(normal.determinant()) > 1e-30 * std::pow(m[5], 3)))
-        return {{nan, nan, nan}};
-      inverse.invert(normal);
-      dealii::Vector<double> rhs(3), def(3);
-      rhs(0) = -m[6];
-      rhs(1) = -m[7];
-      rhs(2) = -m[8];
-      inverse.vmult(def, rhs);
-      const double zeta_c = -def(0) / 2, rho_c = -def(1) / 2;
-      const double radius2 = zeta_c * zeta_c + rho_c * rho_c - def(2);
-      return {{zeta_c, rho_c, radius2 > 0 ? std::sqrt(radius2) : nan}};
-    }
-
-    // The circle of the fit with its centre on the line of centres (rho_c
-    // = 0): minimise sum (z + D zeta + F)^2. (zeta_c, 0, R); NaN without
-    // enough points.
-    std::array<double, 3>
-    fitted_axial_circle(const double *m)
-    {
-      const double nan = std::numeric_limits<double>::quiet_NaN();
-      const double det = m[0] * m[5] - m[2] * m[2];
-      if (!(m[5] > 0) || !(std::abs(det) > 1e-14 * m[0] * m[5]))
-        return {{nan, nan, nan}};
-      const double D = (-m[6] * m[5] + m[8] * m[2]) / det;
-      const double F = (-m[8] * m[0] + m[6] * m[2]) / det;
-      const double zeta_c  = -D / 2;
-      const double radius2 = zeta_c * zeta_c - F;
-      return {{zeta_c, 0., radius2 > 0 ? std::sqrt(radius2) : nan}};
     }
   } // namespace
 
@@ -154,101 +93,35 @@ namespace levelsinter
     const BoundingBox<dim>    box(std::make_pair(low, high));
     std::vector<double>       volume(n + 1, 0.); // the box's solid last
     const bool                first = initial_volume.empty();
-    std::vector<unsigned int> near;
 
-    // Per grain boundary, on each side (grain i at zeta < 0, j at zeta >
-    // 0) and, in 2D, at each end: circles fitted to the grain's surface in
-    // the meridian plane (zeta, rho) beyond 1.5 l from the boundary's plane
+    // Per grain boundary, on each side and, in 2D, at each end: circles
+    // fitted to the grain's surface beyond 1.5 l from the boundary's plane
     // (the triple-line kernel has the half-width l, doc/numerics.md), near
-    // the triple line (to 1.5 l + R / 4: the dihedral angle where the
-    // circle meets the plane) and on the whole grain (radius and centre).
-    // A grain with more grain boundaries (a row, a packing) leaves out the
-    // same 1.5 l about its other boundaries: their grooves are not on the
-    // circle, and in a row of squat grains (gamma_gb = gamma_s: centre
-    // spacing R) they would take a third of each fit.
+    // the triple line (the dihedral angle where the circle meets the
+    // plane) and on the whole grain (radius and centre). A grain with more
+    // grain boundaries (a row, a packing) leaves out the same 1.5 l about
+    // its other boundaries: in a row of squat grains (gamma_gb = gamma_s:
+    // centre spacing R) they would take a third of each fit.
     const auto boundaries = grain_geometry::find_grain_boundaries(alpha, cells);
-    const unsigned int  nb = boundaries.size();
-    const bool revolution = alpha.measure().template body_dimension<dim>() == 3;
-    std::vector<double> moments(nb * 8 * n_moments, 0.);
-    const double        inner = 1.5 * grains.kernel_width();
-    const auto          near_other = [&](const unsigned int  b,
-                                const unsigned int  grain,
-                                const Point<dim>   &x) {
-      for (unsigned int o = 0; o < nb; ++o)
-        if (o != b && (boundaries[o].i == grain || boundaries[o].j == grain))
-          {
-            const Tensor<1, dim> offset = x - boundaries[o].origin;
-            const double         zeta   = offset * boundaries[o].normal;
-            if (std::abs(zeta) < inner &&
-                (offset - zeta * boundaries[o].normal).norm() <
-                  boundaries[o].radius + inner)
-              return true;
-          }
-      return false;
-    };
-    const auto          fit    = [&](const unsigned int b,
-                           const unsigned int whole,
-                           const unsigned int side,
-                           const unsigned int end) {
-      return &moments[(((b * 2 + whole) * 2 + side) * 2 + end) * n_moments];
-    };
-    interface_measures::RegionIntegrands<dim> integrands;
+    const auto circles    = grain_geometry::fit_surface_circles(
+      alpha, cells, boundaries, 1.5 * grains.kernel_width());
+    const unsigned int nb = boundaries.size();
     if (box_has_volume && first)
       {
+        interface_measures::RegionIntegrands<dim> integrands;
         integrands.solid_flags = update_JxW_values | update_quadrature_points;
         integrands.on_solid    = [&](const auto &, const auto &values) {
           for (const unsigned int q : values.quadrature_point_indices())
             if (box.point_inside(values.quadrature_point(q)))
               volume[n] += alpha.measure().JxW(values, q);
         };
+        interface_measures::integrate_regions(alpha, integrands);
       }
-    integrands.surface_flags = update_JxW_values | update_quadrature_points;
-    integrands.on_surface    = [&](const auto &cell, const auto &values) {
-      cells.candidates(cell->center(), cell->diameter() / 2, near);
-      for (unsigned int b = 0; b < nb; ++b)
-        {
-          const auto  &boundary = boundaries[b];
-          const double size     = std::max(cells.radius(boundary.i),
-                                       cells.radius(boundary.j));
-          const double near_end = inner + size / 4;
-          if (cell->center().distance(boundary.origin) >
-              boundary.radius + 3 * size + cell->diameter())
-            continue;
-          for (const unsigned int q : values.quadrature_point_indices())
-            {
-              const Point<dim>    &x      = values.quadrature_point(q);
-              const Tensor<1, dim> offset = x - boundary.origin;
-              const double         zeta   = offset * boundary.normal;
-              const unsigned int   side   = zeta > 0 ? 1 : 0;
-              const unsigned int   owner  = cells.owner(x, near);
-              if (std::abs(zeta) < inner ||
-                  owner != (side == 1 ? boundary.j : boundary.i) ||
-                  near_other(b, owner, x))
-                continue;
-              const Tensor<1, dim> radial = offset - zeta * boundary.normal;
-              unsigned int         end    = 0;
-              if constexpr (dim == 2)
-                if (boundary.strip)
-                  end = radial * Tensor<1, dim>({-boundary.normal[1],
-                                                 boundary.normal[0]}) >= 0 ?
-                          0 :
-                          1;
-              const double rho = radial.norm();
-              if (rho < boundary.radius / 2)
-                continue;
-              add_moments(zeta, rho, values.JxW(q), fit(b, 1, side, end));
-              if (std::abs(zeta) < near_end)
-                add_moments(zeta, rho, values.JxW(q), fit(b, 0, side, end));
-            }
-        }
-    };
-    interface_measures::integrate_regions(alpha, integrands);
     Utilities::MPI::sum(volume, comm, volume);
     std::vector<Point<dim>>   centroid;
     const std::vector<double> grain_volume =
       grain_geometry::grain_volumes(alpha, cells, nullptr, &centroid);
     std::copy(grain_volume.begin(), grain_volume.end(), volume.begin());
-    Utilities::MPI::sum(moments, comm, moments);
     double solid = 0;
     for (unsigned int i = 0; i < n; ++i)
       solid += volume[i];
@@ -308,7 +181,7 @@ namespace levelsinter
         // +zeta, -cos(psi/2) on j's side (centre at zeta_c > 0 for psi <
         // 180 degrees), +cos(psi/2) on i's. The means over the sides and
         // ends with a fit.
-        const unsigned int k = &b - boundaries.data();
+        const auto &circle = circles[&b - boundaries.data()];
         double cos_half = 0, fit_radius = 0, centre[2] = {0, 0},
                near_end = 0;
         unsigned int n_near = 0, n_whole = 0, n_centre[2] = {0, 0},
@@ -316,9 +189,7 @@ namespace levelsinter
         for (unsigned int side = 0; side < 2; ++side)
           for (unsigned int end = 0; end < 2; ++end)
             {
-              const auto near = revolution ?
-                                  fitted_axial_circle(fit(k, 0, side, end)) :
-                                  fitted_circle(fit(k, 0, side, end));
+              const auto &near = circle.near[side][end];
               if (std::isfinite(near[2]))
                 {
                   cos_half += (side == 1 ? near[0] : -near[0]) / near[2];
@@ -328,14 +199,15 @@ namespace levelsinter
                   // rays read a at the groove, which the kink's ridge
                   // rounds over k cells (doc/numerics.md, "The neck's
                   // width at the groove").
-                  if (std::abs(near[0]) < near[2])
+                  if (const double crossing =
+                        grain_geometry::plane_crossing(near);
+                      std::isfinite(crossing))
                     {
-                      near_end += near[1] + std::sqrt(near[2] * near[2] -
-                                                      near[0] * near[0]);
+                      near_end += crossing;
                       ++n_end;
                     }
                 }
-              const auto whole = fitted_circle(fit(k, 1, side, end));
+              const auto &whole = circle.whole[side][end];
               if (std::isfinite(whole[2]))
                 {
                   fit_radius += whole[2];

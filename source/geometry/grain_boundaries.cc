@@ -1,5 +1,8 @@
 #include <deal.II/base/mpi.h>
 
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+
 #include <levelsinter/geometry/grain_boundaries.h>
 #include <levelsinter/level_set/interface_measures.h>
 
@@ -47,7 +50,96 @@ namespace levelsinter::grain_geometry
     {
       return std::abs(s) < 1 ? (1 + std::cos(M_PI * s)) / 2 : 0.;
     }
+
+    // Sums of the algebraic circle fit (Kasa) of points (zeta, rho) in the
+    // meridian plane of a grain boundary: minimise sum (z + D zeta + E rho
+    // + F)^2, z = zeta^2 + rho^2, weighted by the surface element.
+    constexpr unsigned int n_moments = 9;
+
+    void
+    add_moments(const double zeta, const double rho, const double w, double *m)
+    {
+      const double z = zeta * zeta + rho * rho;
+      const double terms[n_moments] = {
+        zeta * zeta, zeta * rho, zeta, rho * rho, rho, 1, z * zeta, z * rho, z};
+      for (unsigned int k = 0; k < n_moments; ++k)
+        m[k] += w * terms[k];
+    }
+
+    // The circle of the fit: (zeta_c, rho_c, R); NaN without enough
+    // points.
+    std::array<double, 3>
+    fitted_circle(const double *m)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      if (!(m[5] > 0))
+        return {{nan, nan, nan}};
+      FullMatrix<double> normal(3, 3), inverse(3, 3);
+      const double       entries[9] = {
+        m[0], m[1], m[2], m[1], m[3], m[4], m[2], m[4], m[5]};
+      normal.fill(entries);
+      if (!(std::abs(normal.determinant()) > 1e-30 * std::pow(m[5], 3)))
+        return {{nan, nan, nan}};
+      inverse.invert(normal);
+      dealii::Vector<double> rhs(3), def(3);
+      rhs(0) = -m[6];
+      rhs(1) = -m[7];
+      rhs(2) = -m[8];
+      inverse.vmult(def, rhs);
+      const double zeta_c = -def(0) / 2, rho_c = -def(1) / 2;
+      const double radius2 = zeta_c * zeta_c + rho_c * rho_c - def(2);
+      return {{zeta_c, rho_c, radius2 > 0 ? std::sqrt(radius2) : nan}};
+    }
+
+    // The circle of the fit with its centre on the line of centres (rho_c
+    // = 0): minimise sum (z + D zeta + F)^2. (zeta_c, 0, R); NaN without
+    // enough points.
+    std::array<double, 3>
+    fitted_axial_circle(const double *m)
+    {
+      const double nan = std::numeric_limits<double>::quiet_NaN();
+      const double det = m[0] * m[5] - m[2] * m[2];
+      if (!(m[5] > 0) || !(std::abs(det) > 1e-14 * m[0] * m[5]))
+        return {{nan, nan, nan}};
+      const double D = (-m[6] * m[5] + m[8] * m[2]) / det;
+      const double F = (-m[8] * m[0] + m[6] * m[2]) / det;
+      const double zeta_c  = -D / 2;
+      const double radius2 = zeta_c * zeta_c - F;
+      return {{zeta_c, 0., radius2 > 0 ? std::sqrt(radius2) : nan}};
+    }
   } // namespace
+
+  template <int dim>
+  void
+  set_extent(GrainBoundary<dim> &boundary,
+             const double        end_0,
+             const double        end_1,
+             const bool          body_3d)
+  {
+    const double old_area = boundary.area;
+    if (body_3d)
+      {
+        // dim == 3 or axisymmetric: a disc.
+        const double a      = end_0;
+        boundary.radius     = a;
+        boundary.area       = M_PI * a * a;
+        boundary.perimeter  = 2 * M_PI * a;
+        boundary.resistance = M_PI * std::pow(a, 4) / 8;
+      }
+    else
+      {
+        boundary.strip           = true;
+        boundary.end_distance[0] = end_0;
+        boundary.end_distance[1] = end_1;
+        const double a           = (end_0 + end_1) / 2;
+        boundary.radius          = a;
+        boundary.area            = 2 * a;
+        boundary.perimeter       = 2;
+        boundary.resistance      = 2 * std::pow(a, 3) / 3;
+      }
+    if (old_area > 0)
+      boundary.area_in_domain *= boundary.area / old_area;
+  }
 
   template <int dim>
   std::vector<GrainBoundary<dim>>
@@ -144,32 +236,124 @@ namespace levelsinter::grain_geometry
         if (body_3d)
           {
             // dim == 3 (8 rays) or axisymmetric (the one ray along r).
-            boundary.radius         = std::sqrt(square / n_valid);
-            const double a          = boundary.radius;
-            boundary.area           = M_PI * a * a;
+            const double a = std::sqrt(square / n_valid);
+            set_extent(boundary, a, a, true);
             boundary.area_in_domain = dim == 3 ?
                                         boundary.area * n_valid / n_rays :
                                         boundary.area;
-            boundary.perimeter      = 2 * M_PI * a;
-            boundary.resistance     = M_PI * std::pow(a, 4) / 8;
           }
         else
           {
-            for (unsigned int r = 0; r < 2; ++r)
-              boundary.end_distance[r] =
-                valid[r] ? lengths[r] : lengths[1 - r];
-            boundary.strip = true;
-            boundary.radius =
-              (boundary.end_distance[0] + boundary.end_distance[1]) / 2;
-            const double a          = boundary.radius;
-            boundary.area           = 2 * a;
+            set_extent(boundary,
+                       valid[0] ? lengths[0] : lengths[1],
+                       valid[1] ? lengths[1] : lengths[0],
+                       false);
             boundary.area_in_domain = sum;
-            boundary.perimeter      = 2;
-            boundary.resistance     = 2 * std::pow(a, 3) / 3;
           }
         result.push_back(boundary);
       }
     return result;
+  }
+
+  template <int dim>
+  std::vector<SurfaceCircles>
+  fit_surface_circles(const LevelSetField<dim>              &level_set,
+                      const PowerCells<dim>                 &grains,
+                      const std::vector<GrainBoundary<dim>> &boundaries,
+                      const double                           inner)
+  {
+    const unsigned int nb = boundaries.size();
+    const bool         revolution =
+      level_set.measure().template body_dimension<dim>() == 3;
+    // Per boundary, near / whole, side and end: the fit's sums.
+    std::vector<double> moments(nb * 8 * n_moments, 0.);
+    const auto          fit = [&](const unsigned int b,
+                         const unsigned int whole,
+                         const unsigned int side,
+                         const unsigned int end) {
+      return &moments[(((b * 2 + whole) * 2 + side) * 2 + end) * n_moments];
+    };
+    const auto near_other = [&](const unsigned int  b,
+                                const unsigned int  grain,
+                                const Point<dim>   &x) {
+      for (unsigned int o = 0; o < nb; ++o)
+        if (o != b && (boundaries[o].i == grain || boundaries[o].j == grain))
+          {
+            const Tensor<1, dim> offset = x - boundaries[o].origin;
+            const double         zeta   = offset * boundaries[o].normal;
+            if (std::abs(zeta) < inner &&
+                (offset - zeta * boundaries[o].normal).norm() <
+                  boundaries[o].radius + inner)
+              return true;
+          }
+      return false;
+    };
+    std::vector<unsigned int>                 near;
+    interface_measures::RegionIntegrands<dim> integrands;
+    integrands.surface_flags = update_JxW_values | update_quadrature_points;
+    integrands.on_surface    = [&](const auto &cell, const auto &values) {
+      grains.candidates(cell->center(), cell->diameter() / 2, near);
+      for (unsigned int b = 0; b < nb; ++b)
+        {
+          const auto  &boundary = boundaries[b];
+          const double size     = std::max(grains.radius(boundary.i),
+                                       grains.radius(boundary.j));
+          const double near_end = inner + size / 4;
+          if (cell->center().distance(boundary.origin) >
+              boundary.radius + 3 * size + cell->diameter())
+            continue;
+          for (const unsigned int q : values.quadrature_point_indices())
+            {
+              const Point<dim>    &x      = values.quadrature_point(q);
+              const Tensor<1, dim> offset = x - boundary.origin;
+              const double         zeta   = offset * boundary.normal;
+              const unsigned int   side   = zeta > 0 ? 1 : 0;
+              const unsigned int   owner  = grains.owner(x, near);
+              if (std::abs(zeta) < inner ||
+                  owner != (side == 1 ? boundary.j : boundary.i) ||
+                  near_other(b, owner, x))
+                continue;
+              const Tensor<1, dim> radial = offset - zeta * boundary.normal;
+              unsigned int         end    = 0;
+              if constexpr (dim == 2)
+                if (boundary.strip)
+                  end = radial * Tensor<1, dim>({-boundary.normal[1],
+                                                 boundary.normal[0]}) >= 0 ?
+                          0 :
+                          1;
+              const double rho = radial.norm();
+              if (rho < boundary.radius / 2)
+                continue;
+              add_moments(zeta, rho, values.JxW(q), fit(b, 1, side, end));
+              if (std::abs(zeta) < near_end)
+                add_moments(zeta, rho, values.JxW(q), fit(b, 0, side, end));
+            }
+        }
+    };
+    interface_measures::integrate_regions(level_set, integrands);
+    Utilities::MPI::sum(moments,
+                        level_set.dof_handler().get_communicator(),
+                        moments);
+    std::vector<SurfaceCircles> circles(nb);
+    for (unsigned int b = 0; b < nb; ++b)
+      for (unsigned int side = 0; side < 2; ++side)
+        for (unsigned int end = 0; end < 2; ++end)
+          {
+            circles[b].near[side][end] =
+              revolution ? fitted_axial_circle(fit(b, 0, side, end)) :
+                           fitted_circle(fit(b, 0, side, end));
+            circles[b].whole[side][end] = fitted_circle(fit(b, 1, side, end));
+          }
+    return circles;
+  }
+
+  double
+  plane_crossing(const std::array<double, 3> &circle)
+  {
+    return std::abs(circle[0]) < circle[2] ?
+             circle[1] + std::sqrt(circle[2] * circle[2] -
+                                   circle[0] * circle[0]) :
+             std::numeric_limits<double>::quiet_NaN();
   }
 
   template <int dim>
@@ -327,8 +511,22 @@ namespace levelsinter::grain_geometry
         }
   }
 
+  template void
+  set_extent(GrainBoundary<2> &, const double, const double, const bool);
+  template void
+  set_extent(GrainBoundary<3> &, const double, const double, const bool);
   template std::vector<GrainBoundary<2>>
   find_grain_boundaries(const LevelSetField<2> &, const PowerCells<2> &);
+  template std::vector<SurfaceCircles>
+  fit_surface_circles(const LevelSetField<2> &,
+                      const PowerCells<2> &,
+                      const std::vector<GrainBoundary<2>> &,
+                      const double);
+  template std::vector<SurfaceCircles>
+  fit_surface_circles(const LevelSetField<3> &,
+                      const PowerCells<3> &,
+                      const std::vector<GrainBoundary<3>> &,
+                      const double);
   template std::vector<GrainBoundary<3>>
   find_grain_boundaries(const LevelSetField<3> &, const PowerCells<3> &);
   template double

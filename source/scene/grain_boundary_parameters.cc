@@ -92,6 +92,21 @@ namespace levelsinter
                         "than 0.03 finest cell in a step (doc/numerics.md, "
                         "\"Settling: the step's accuracy and clear "
                         "stops\").");
+      prm.declare_entry("Sharp contact radius",
+                        "false",
+                        Patterns::Bool(),
+                        "With the sharp triple-line condition (kink width k "
+                        "> 0): the contact law reads the grain boundary's "
+                        "radius a where circles fitted to the grains' "
+                        "surfaces next to the triple line meet its plane "
+                        "(the sharp triple line), not where the rays along "
+                        "the plane leave the discrete solid: the level set "
+                        "fills the groove's corner, which put the rays' a "
+                        "1.2-2.3 % wide of the resting shape's and kept the "
+                        "grains of a pair at rest separating "
+                        "(doc/numerics.md, \"Settling: the sharp contact "
+                        "radius\"). Where the two differ by more than k "
+                        "cells (a neck still forming) the rays' a is kept.");
     }
     prm.leave_subsection();
   }
@@ -109,6 +124,7 @@ namespace levelsinter
     kink_width         = prm.get_double("Triple-line kink width");
     conserve_volumes   = prm.get_bool("Conserve grain volumes");
     implicit_contact   = prm.get_bool("Implicit contact law");
+    sharp_contact      = prm.get_bool("Sharp contact radius");
     prm.leave_subsection();
     if (!enabled)
       return;
@@ -121,6 +137,12 @@ namespace levelsinter
                  "a kink width needs Triple-line condition = true (it "
                  "places that condition's turning); set it to 0 or turn "
                  "the condition on");
+    if (sharp_contact && !(kink_width > 0))
+      fail_entry("Grain boundaries/Sharp contact radius",
+                 "the sharp contact radius extrapolates the surfaces to the "
+                 "groove that the sharp triple-line condition forms: it "
+                 "needs Triple-line condition = true and a Triple-line kink "
+                 "width > 0");
     if (!(coefficient > 0))
       fail_entry("Grain boundaries/Coefficient",
                  "C_gb = delta_gb D_gb gamma_s Omega / kT must be positive");

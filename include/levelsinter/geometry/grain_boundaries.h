@@ -9,6 +9,7 @@
 #include <levelsinter/geometry/power_cells.h>
 #include <levelsinter/level_set/level_set_field.h>
 
+#include <array>
 #include <vector>
 
 namespace levelsinter
@@ -64,6 +65,53 @@ namespace levelsinter
     std::vector<GrainBoundary<dim>>
     find_grain_boundaries(const LevelSetField<dim> &level_set,
                           const PowerCells<dim>    &grains);
+
+    /**
+     * Sets the ends of a 2D strip (@p end_0 along +t, @p end_1 along -t;
+     * a disc's radius is @p end_0) and what follows from them: the
+     * radius, area, perimeter and resistance; the part of the area in the
+     * domain keeps its share of the whole.
+     */
+    template <int dim>
+    void
+    set_extent(GrainBoundary<dim> &boundary,
+               const double        end_0,
+               const double        end_1,
+               const bool          body_3d);
+
+    /**
+     * Circles fitted (algebraic fit, Kasa) in the meridian plane (zeta,
+     * rho) of each grain boundary to the surface of each of its grains
+     * (side 0: grain i at zeta < 0, side 1: j) and, on a 2D strip, at each
+     * end (0 along +t): near the triple line, from @p inner to @p inner +
+     * R / 4 off the plane (R the larger grain's radius; on a body of
+     * revolution with the centre on the line of centres, the pair's
+     * axis), and over the whole grain beyond @p inner. Surface points
+     * within @p inner of a grain's other boundaries are left out: their
+     * grooves are not on the circle. Each circle is (zeta_c, rho_c,
+     * radius), NaN without enough points. Collective.
+     */
+    struct SurfaceCircles
+    {
+      std::array<double, 3> near[2][2];
+      std::array<double, 3> whole[2][2];
+    };
+
+    template <int dim>
+    std::vector<SurfaceCircles>
+    fit_surface_circles(const LevelSetField<dim>              &level_set,
+                        const PowerCells<dim>                 &grains,
+                        const std::vector<GrainBoundary<dim>> &boundaries,
+                        const double                           inner);
+
+    /**
+     * Where @p circle (zeta_c, rho_c, radius) meets the plane zeta = 0 on
+     * its outer side, rho_c + sqrt(radius^2 - zeta_c^2): for a near
+     * circle the sharp triple line, whose corner the smooth level set
+     * fills; NaN if it does not meet the plane.
+     */
+    double
+    plane_crossing(const std::array<double, 3> &circle);
 
     /**
      * The kernel about the triple line of @p boundary at @p x: phi(zeta /

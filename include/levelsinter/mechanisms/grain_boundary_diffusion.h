@@ -138,6 +138,14 @@ namespace levelsinter
     void
     find_boundaries(const LevelSetField<dim> &alpha);
 
+    // With `Sharp contact radius`: each boundary's a (each end's in 2D)
+    // moved from the rays' end to where the near circles of its grains'
+    // surfaces meet its plane, by as much of the difference as is a
+    // corner's filling (doc/numerics.md, "Settling: the sharp contact
+    // radius").
+    void
+    move_to_sharp_triple_lines(const LevelSetField<dim> &alpha);
+
     // The triple-line condition's chemical potential mu on the level set's
     // DoFs (SurfaceDiffusion::set_potential_source), from the grain
     // boundaries it finds, which compute() of the same state then uses.

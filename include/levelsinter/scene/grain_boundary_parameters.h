@@ -46,5 +46,6 @@ namespace levelsinter
     double kink_width         = 0; // its kink across the plane, finest cells
     bool   conserve_volumes   = false; // planes moved to keep each grain's volume
     bool   implicit_contact   = false; // the contact law implicit in the approach
+    bool   sharp_contact      = false; // the law's a at the sharp triple line
   };
 } // namespace levelsinter
