@@ -170,17 +170,25 @@ add_test(NAME volume_diffusion_flux_fillet_two_grains_2d COMMAND ${SD_VALIDATE}
   neck ${VD_FILLET} 400 --sample-interval 1
   --set "Mesh refinement/Maximum level=4"
   --min-neck-growth 1.215 --max-volume-change 1e-5)
-# The studies: R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to
-# t = 0.0022 s (147 steps: at step 149 the extension's GMRES stalled).
-set(FILLET_STUDIES)
-foreach(level_end "4;0.005" "5;0.005" "6;0.0022")
-  list(GET level_end 0 level)
-  list(GET level_end 1 end)
-  add_test(NAME study_flux_fillet_vd_neck_l${level}_2d COMMAND ${SD_VALIDATE}
-    neck ${VD_FILLET} 2000 --sample-interval 1
-    --set "Mesh refinement/Maximum level=${level}"
-    --set "Time/End time=${end}" --set "Time/Time step=1.497005988e-5"
-    --csv flux_fillet_vd_neck_l${level}_2d.csv)
-  list(APPEND FILLET_STUDIES study_flux_fillet_vd_neck_l${level}_2d)
-endforeach()
-set_tests_properties(${FILLET_STUDIES} PROPERTIES LABELS validation-long)
+# The convergence study of a start: R/h = 12.8, 25.6 and 51.2 (Maximum
+# level 4, 5, 6) with one fixed step, each level to its end time (the
+# arguments after the scene: level, end time, level, end time, ...),
+# labelled validation-long.
+function(add_two_grain_neck_study name scene)
+  set(levels_ends ${ARGN})
+  set(studies)
+  while(levels_ends)
+    list(POP_FRONT levels_ends level end)
+    set(test study_flux_${name}_vd_neck_l${level}_2d)
+    add_test(NAME ${test} COMMAND ${SD_VALIDATE}
+      neck ${scene} 2000 --sample-interval 1
+      --set "Mesh refinement/Maximum level=${level}"
+      --set "Time/End time=${end}" --set "Time/Time step=1.497005988e-5"
+      --csv flux_${name}_vd_neck_l${level}_2d.csv)
+    list(APPEND studies ${test})
+  endwhile()
+  set_tests_properties(${studies} PROPERTIES LABELS validation-long)
+endfunction()
+# R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to t = 0.0022 s
+# (147 steps: at step 149 the extension's GMRES stalled).
+add_two_grain_neck_study(fillet ${VD_FILLET} 4 0.005 5 0.005 6 0.0022)
