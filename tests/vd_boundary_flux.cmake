@@ -192,3 +192,24 @@ endfunction()
 # R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to t = 0.0022 s
 # (147 steps: at step 149 the extension's GMRES stalled).
 add_two_grain_neck_study(fillet ${VD_FILLET} 4 0.005 5 0.005 6 0.0022)
+
+# --- The two grains from a curvature-continuous neck (issue 27) ------------
+# two_grains_blended_volume_diffusion_2d.prm: the fillet's scene with the
+# circles joined by an even sextic matching value, slope and curvature at
+# the join (x0/R = 0.30, curvature 32 in the middle, monotone to -1/R), so
+# that the start has no curvature jump and its pressure no log singularity
+# (doc/validation.md, "Volume diffusion: the neck from a curvature-
+# continuous start").
+set(VD_BLENDED
+  ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_blended_volume_diffusion_2d.prm)
+# CI: R/h = 12.8 to t = 0.0025 s (167 steps). Measured: x/R 0.2996 ->
+# 0.3289 (x 1.0975), |dV/V| 1.3e-7, 18 s CPU; the neck passes its first
+# grid node (x/R = 0.3125) without a pause. Limits: growth x 1.08 (at
+# R/h = 25.6, which pauses at that node, x 1.054 by this time) and |dV/V|
+# 1e-5.
+add_test(NAME volume_diffusion_flux_blended_two_grains_2d
+  COMMAND ${SD_VALIDATE} neck ${VD_BLENDED} 400 --sample-interval 1
+  --set "Mesh refinement/Maximum level=4" --set "Time/End time=0.0025"
+  --min-neck-growth 1.08 --max-volume-change 1e-5)
+# R/h = 12.8, 25.6 and 51.2 to t = 0.005 s (335 steps each).
+add_two_grain_neck_study(blended ${VD_BLENDED} 4 0.005 5 0.005 6 0.005)
