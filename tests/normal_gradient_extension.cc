@@ -13,11 +13,13 @@
 //   mode2   p = x^2 - y^2         xi = 2 R cos 2 theta on the equator
 //   cubic   p = x^3 - 3 x y^2     xi = 3 R^2 cos 3 theta on the equator
 // (r, x, y about the centre). --constant 1: the paper's constant extension
-// instead of the linear extrapolation. With --jump J the pressure also jumps by J
-// across the interface, smeared over 1.5 h like the CSF Laplace jump
-// (doc/numerics.md): xi must not see it. Prints the error of xi on the
-// discrete zero level set (cut-cell quadrature), max and surface RMS,
-// relative to max |xi_exact|, and the orders between levels. Limits:
+// instead of the linear extrapolation; --limited 1: the linear one with
+// its correction bounded (Extrapolation = limited). With --jump J the
+// pressure also jumps by J across the interface, smeared over 1.5 h like
+// the CSF Laplace jump (doc/numerics.md): xi must not see it. Prints the
+// error of xi on the discrete zero level set (cut-cell quadrature), max
+// and surface RMS, relative to max |xi_exact|, and the orders between
+// levels. Limits:
 // --max-error (RMS at the finest level), --max-pointwise-error,
 // --min-order (between the last two levels); every case must report no
 // unsourced interface cell. --offset sets lambda in cells (3). --band B:
@@ -233,20 +235,20 @@ namespace
     return it == options.end() ? default_value : it->second;
   }
 
+  // The method and data options (--offset, --jump, --constant, --limited,
+  // --flux, --band, --filter) as the head of this file describes them.
   template <int dim>
   Result
-  run(const std::string             &field,
-      const std::vector<Point<dim>> &centres,
-      const double                   ball_radius,
-      const unsigned int             level,
-      const double                   offset,
-      const double                   jump,
-      const bool                     constant,
-      const bool                     flux,
-      const double                   band,
-      const double                   thickness,
-      const double                   bar = 0)
+  run(const std::string                   &field,
+      const std::vector<Point<dim>>       &centres,
+      const double                         ball_radius,
+      const unsigned int                   level,
+      const std::map<std::string, double> &options,
+      const double                         bar = 0)
   {
+    const double offset    = option(options, "offset", 3);
+    const double band      = option(options, "band", 0);
+    const double thickness = option(options, "filter", 6);
     const MPI_Comm                            comm = MPI_COMM_WORLD;
     parallel::distributed::Triangulation<dim> tria(comm);
     GridGenerator::hyper_cube(tria);
@@ -283,7 +285,10 @@ namespace
     TrilinosWrappers::MPI::Vector owned_field(owned, comm),
       field_values(owned, relevant, comm);
     VectorTools::interpolate(stokes_dofs,
-                             Pressure<dim>(field, distance, jump, 1.5 * h),
+                             Pressure<dim>(field,
+                                           distance,
+                                           option(options, "jump", 0),
+                                           1.5 * h),
                              owned_field);
     field_values = owned_field;
 
@@ -291,8 +296,9 @@ namespace
                       TimerOutput::wall_times);
     typename NormalGradientExtension<dim>::Settings settings;
     settings.interior_offset      = offset;
-    settings.linear_extrapolation = !constant;
-    settings.boundary_flux        = flux;
+    settings.linear_extrapolation  = option(options, "constant", 0) == 0;
+    settings.limited_extrapolation = option(options, "limited", 0) > 0;
+    settings.boundary_flux         = option(options, "flux", 0) > 0;
     NormalGradientExtension<dim> extension(filter, settings, timer);
     extension.setup(level_set);
     Result result;
@@ -385,6 +391,7 @@ namespace
       std::cout << dim << "D, p = " << field << ", lambda = " << offset
                 << " h, jump " << jump
                 << (option(options, "constant", 0) > 0 ? ", constant" : "")
+                << (option(options, "limited", 0) > 0 ? ", limited" : "")
                 << (option(options, "flux", 0) > 0 ? ", boundary flux" : "")
                 << "\n"
                 << " level  R/h   max error   rms error  order  unsourced"
@@ -393,16 +400,8 @@ namespace
       *csv << "level,max_error,rms_error,unsourced\n";
     for (const unsigned int level : levels)
       {
-        const Result r = run<dim>(field,
-                                  {centre<dim>()},
-                                  radius,
-                                  level,
-                                  offset,
-                                  jump,
-                                  option(options, "constant", 0) > 0,
-                                  option(options, "flux", 0) > 0,
-                                  option(options, "band", 0),
-                                  option(options, "filter", 6));
+        const Result r =
+          run<dim>(field, {centre<dim>()}, radius, level, options);
         rms.push_back(r.rms_error);
         const double order =
           rms.size() > 1 ? std::log2(rms[rms.size() - 2] / rms.back()) : 0;
@@ -454,12 +453,7 @@ namespace
                             {Point<2>(0.2, 0.5), Point<2>(0.8, 0.5)},
                             0.15,
                             level,
-                            option(options, "offset", 3),
-                            0,
-                            option(options, "constant", 0) > 0,
-                            option(options, "flux", 0) > 0,
-                            0,
-                            6,
+                            options,
                             0.04);
     if (root)
       std::cout << "two discs joined by a bar 0.08 thick, h = 1/" << (1 << level)
@@ -519,8 +513,14 @@ namespace
                          "set Time unit = reduced\n"
                          "set Reference radius = 2e-7\n"
                          "set Extrapolation = constant\n");
-    expect(!p.linear_extrapolation && p.interior_offset == 6,
+    expect(!p.linear_extrapolation && !p.limited_extrapolation &&
+             p.interior_offset == 6,
            "Extrapolation = constant, default Interior offset");
+    const auto limited = parse("set Enabled = true\n"
+                               "set Coefficient = 1\n"
+                               "set Extrapolation = limited\n");
+    expect(limited.linear_extrapolation && limited.limited_extrapolation,
+           "Extrapolation = limited: linear with the bound");
     expect(p.time_step_factor == 0.5, "default Time step factor");
     expect(error_of("set Enabled = true\nset Coefficient = 1\n"
                     "set Time step factor = 2\n")

@@ -61,6 +61,7 @@ namespace levelsinter
       typename NormalGradientExtension<dim>::Settings s;
       s.interior_offset      = p.interior_offset;
       s.linear_extrapolation = p.linear_extrapolation;
+      s.limited_extrapolation = p.limited_extrapolation;
       s.recovered_gradient   = p.recovered_gradient;
       s.boundary_flux        = p.boundary_flux;
       s.solver_tolerance     = p.solver_tolerance;

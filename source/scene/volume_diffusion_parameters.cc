@@ -73,10 +73,13 @@ namespace levelsinter
                         "measured); 3 suffices for a smeared jump alone.");
       prm.declare_entry("Extrapolation",
                         "linear",
-                        Patterns::Selection("linear|constant"),
+                        Patterns::Selection("linear|limited|constant"),
                         "How grad p . n read lambda inside reaches the "
                         "interface: linear (with its normal derivative, "
-                        "second order in h) or constant (Eq. 111 as in the "
+                        "second order in h), limited (linear with the "
+                        "correction at each source at most twice the value "
+                        "read there: no grid-scale ridge of xi grows, "
+                        "doc/numerics.md) or constant (Eq. 111 as in the "
                         "paper, an O(lambda) error).");
       prm.declare_entry("Pressure gradient",
                         "nodal",
@@ -153,7 +156,8 @@ namespace levelsinter
                                           {"reduced", TimeUnit::reduced}});
     reference_radius = prm.get_double("Reference radius");
     interior_offset  = prm.get_double("Interior offset");
-    linear_extrapolation = prm.get("Extrapolation") == "linear";
+    linear_extrapolation  = prm.get("Extrapolation") != "constant";
+    limited_extrapolation = prm.get("Extrapolation") == "limited";
     recovered_gradient   = prm.get("Pressure gradient") == "recovered";
     boundary_flux        = prm.get("Pressure gradient") == "flux";
     total_elastic_state  = prm.get("Elastic state") == "total";

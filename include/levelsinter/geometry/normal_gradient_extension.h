@@ -68,6 +68,11 @@ namespace levelsinter
       // xi = (g - d eta) + d eta at each node (linear extrapolation, second
       // order), or g alone (the paper's constant extension, first order).
       bool         linear_extrapolation = true;
+      // With linear_extrapolation: bound the carried correction at each
+      // source, |d eta| <= c |g| (c in normal_gradient_extension.cc), so
+      // that the extrapolation cannot feed a grid-scale ridge of xi
+      // (doc/numerics.md, "Volume diffusion: the limited extrapolation").
+      bool         limited_extrapolation = false;
       // grad p at a node: the average of the cells' gradients at the vertex
       // (false), or recovered by a lumped L2 projection over the solid part
       // of the cells (add_solid_gradient_projection()), which reads no

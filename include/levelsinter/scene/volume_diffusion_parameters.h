@@ -50,6 +50,7 @@ namespace levelsinter
     double       reference_radius = 0;         // R of t*
     double       interior_offset  = 6;         // lambda in cells (Eq. 110)
     bool         linear_extrapolation = true;  // or constant (Eq. 111)
+    bool         limited_extrapolation = false; // linear, |d eta| bounded
     bool         recovered_gradient   = false; // grad p over the solid part
     bool         boundary_flux        = false; // xi from Green's formula
     // Each elastic solve from u = 0, the stress of the current shape (no
