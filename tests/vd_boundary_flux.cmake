@@ -170,17 +170,46 @@ add_test(NAME volume_diffusion_flux_fillet_two_grains_2d COMMAND ${SD_VALIDATE}
   neck ${VD_FILLET} 400 --sample-interval 1
   --set "Mesh refinement/Maximum level=4"
   --min-neck-growth 1.215 --max-volume-change 1e-5)
-# The studies: R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to
-# t = 0.0022 s (147 steps: at step 149 the extension's GMRES stalled).
-set(FILLET_STUDIES)
-foreach(level_end "4;0.005" "5;0.005" "6;0.0022")
-  list(GET level_end 0 level)
-  list(GET level_end 1 end)
-  add_test(NAME study_flux_fillet_vd_neck_l${level}_2d COMMAND ${SD_VALIDATE}
-    neck ${VD_FILLET} 2000 --sample-interval 1
-    --set "Mesh refinement/Maximum level=${level}"
-    --set "Time/End time=${end}" --set "Time/Time step=1.497005988e-5"
-    --csv flux_fillet_vd_neck_l${level}_2d.csv)
-  list(APPEND FILLET_STUDIES study_flux_fillet_vd_neck_l${level}_2d)
-endforeach()
-set_tests_properties(${FILLET_STUDIES} PROPERTIES LABELS validation-long)
+# The convergence study of a start: R/h = 12.8, 25.6 and 51.2 (Maximum
+# level 4, 5, 6) with one fixed step, each level to its end time (the
+# arguments after the scene: level, end time, level, end time, ...),
+# labelled validation-long.
+function(add_two_grain_neck_study name scene)
+  set(levels_ends ${ARGN})
+  set(studies)
+  while(levels_ends)
+    list(POP_FRONT levels_ends level end)
+    set(test study_flux_${name}_vd_neck_l${level}_2d)
+    add_test(NAME ${test} COMMAND ${SD_VALIDATE}
+      neck ${scene} 2000 --sample-interval 1
+      --set "Mesh refinement/Maximum level=${level}"
+      --set "Time/End time=${end}" --set "Time/Time step=1.497005988e-5"
+      --csv flux_${name}_vd_neck_l${level}_2d.csv)
+    list(APPEND studies ${test})
+  endwhile()
+  set_tests_properties(${studies} PROPERTIES LABELS validation-long)
+endfunction()
+# R/h = 12.8, 25.6 to t = 0.005 s (334 steps each), 51.2 to t = 0.0022 s
+# (147 steps: at step 149 the extension's GMRES stalled).
+add_two_grain_neck_study(fillet ${VD_FILLET} 4 0.005 5 0.005 6 0.0022)
+
+# --- The two grains from a curvature-continuous neck (issue 27) ------------
+# two_grains_blended_volume_diffusion_2d.prm: the fillet's scene with the
+# circles joined by an even sextic matching value, slope and curvature at
+# the join (x0/R = 0.30, curvature 32 in the middle, monotone to -1/R), so
+# that the start has no curvature jump and its pressure no log singularity
+# (doc/validation.md, "Volume diffusion: the neck from a curvature-
+# continuous start").
+set(VD_BLENDED
+  ${CMAKE_SOURCE_DIR}/parameter_files/two_grains_blended_volume_diffusion_2d.prm)
+# CI: R/h = 12.8 to t = 0.0025 s (167 steps). Measured: x/R 0.2996 ->
+# 0.3289 (x 1.0975), |dV/V| 1.3e-7, 18 s CPU; the neck passes its first
+# grid node (x/R = 0.3125) without a pause. Limits: growth x 1.08 (at
+# R/h = 25.6, which pauses at that node, x 1.054 by this time) and |dV/V|
+# 1e-5.
+add_test(NAME volume_diffusion_flux_blended_two_grains_2d
+  COMMAND ${SD_VALIDATE} neck ${VD_BLENDED} 400 --sample-interval 1
+  --set "Mesh refinement/Maximum level=4" --set "Time/End time=0.0025"
+  --min-neck-growth 1.08 --max-volume-change 1e-5)
+# R/h = 12.8, 25.6 and 51.2 to t = 0.005 s (335 steps each).
+add_two_grain_neck_study(blended ${VD_BLENDED} 4 0.005 5 0.005 6 0.005)
