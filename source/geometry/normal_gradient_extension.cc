@@ -50,9 +50,9 @@ namespace levelsinter
     // = 3 cells at R/h ~ 7, r ~ R - 3 h) and any mode once R/h >~ 20,
     // while a one-cell ridge, whose eta is a difference of differences of
     // the discrete gradient, is cut to twice its own value. Measured on 8
-    // spheres like the 154 (doc/validation.md, "Packings: the late rise of
-    // the largest speed"): c = 4 let the ridge grow again (18.7 um/s at
-    // t = 0.014 s), c = 1 and 2 kept the step at its cap to t = 0.015 s.
+    // spheres like the 154 (doc/validation.md, "Packings: the limited
+    // extrapolation"): c = 4 let the ridge grow again (18.7 um/s at t =
+    // 0.014 s), c = 1 and 2 kept the step at its cap to t = 0.015 s.
     constexpr double extrapolation_limit = 2;
   } // namespace
 

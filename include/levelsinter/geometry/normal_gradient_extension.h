@@ -71,7 +71,8 @@ namespace levelsinter
       // With linear_extrapolation: bound the carried correction at each
       // source, |d eta| <= c |g| (c in normal_gradient_extension.cc), so
       // that the extrapolation cannot feed a grid-scale ridge of xi
-      // (doc/numerics.md, "Volume diffusion: the limited extrapolation").
+      // (doc/numerics.md, "Volume diffusion: the normal pressure
+      // gradient", limited extrapolation).
       bool         limited_extrapolation = false;
       // grad p at a node: the average of the cells' gradients at the vertex
       // (false), or recovered by a lumped L2 projection over the solid part
