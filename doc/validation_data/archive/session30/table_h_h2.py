@@ -77,3 +77,17 @@ for label, name, _ in RUNS:
     late = [float(r["max_velocity"]) for r in rows if float(r["time"]) >= 0.009]
     print(f"| {label} | {len(rows) - 1} | {min(dts):.2e} | "
           f"{min(late):.1f}-{max(late):.1f} |")
+print("\niterations, mean (range) over the steps\n")
+print("| run | DoFs | transport | curvature / v_s | elastic | xi |")
+print("|---|---|---|---|---|---|")
+for label, name, _ in RUNS:
+    rows = data[label]
+    if rows is None:
+        continue
+    cells = []
+    for column in ["transport_iterations", "surface_diffusion_iterations",
+                   "volume_diffusion_mechanics_iterations",
+                   "volume_diffusion_xi_iterations"]:
+        v = [float(r[column]) for r in rows[1:]]
+        cells.append(f"{sum(v) / len(v):.1f} ({min(v):.0f}-{max(v):.0f})")
+    print(f"| {label} | {rows[-1]['dofs']} | " + " | ".join(cells) + " |")
