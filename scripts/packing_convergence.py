@@ -14,7 +14,9 @@ session goes on where it stopped); one whose metrics.csv reaches T is not
 run again. Then, per case, at each of the times (linear interpolation
 between metrics rows): relative density, mean neck radius, open and closed
 porosity, closed pores, and the volume change; the time of the first
-closed pore (pore_events.csv), the steps and the wall time. Each value is
+closed pore (pore_events.csv; a pocket of a few cells counts), the time
+the control volume's closed porosity first exceeds its open porosity (most
+of its pore space cut off), the steps and the wall time. Each value is
 also given relative to the --reference case (default: the last), the
 difference in density and porosity in absolute terms, the neck and the
 closure time relative. One CSV row per case and time; the table printed.
@@ -99,6 +101,15 @@ def first_closure(directory):
     return float("nan")
 
 
+def mostly_closed(rows):
+    """First time at which the control volume's closed porosity exceeds its
+    open porosity (NaN if it never happens in the run)."""
+    for row in rows:
+        if float(row["closed_porosity"]) > float(row["open_porosity"]):
+            return float(row["time"])
+    return float("nan")
+
+
 def analyse(args, cases):
     results = {}
     for name, _ in cases:
@@ -107,11 +118,12 @@ def analyse(args, cases):
         results[name] = {
             "rows": rows,
             "closure": first_closure(directory),
+            "mostly_closed": mostly_closed(rows),
             "steps": int(rows[-1]["step"]),
             "wall": float(rows[-1]["wall_time"])}
     reference = results[args.reference or cases[-1][0]]
     columns = ["case", "time", "steps", "wall_time", "first_closure",
-               "first_closure_rel"]
+               "first_closure_rel", "mostly_closed", "mostly_closed_rel"]
     for q in QUANTITIES:
         columns += [q, q + ("_diff" if q in ABSOLUTE else "_rel")]
     table = []
@@ -121,7 +133,10 @@ def analyse(args, cases):
         for t in args.times:
             row = {"case": name, "time": t, "steps": r["steps"],
                    "wall_time": r["wall"], "first_closure": r["closure"],
-                   "first_closure_rel": closure_rel}
+                   "first_closure_rel": closure_rel,
+                   "mostly_closed": r["mostly_closed"],
+                   "mostly_closed_rel":
+                       r["mostly_closed"] / reference["mostly_closed"] - 1}
             for q in QUANTITIES:
                 value = at(r["rows"], q, t)
                 ref = at(reference["rows"], q, t)

@@ -239,6 +239,51 @@ packing_convergence_test(packing_resolution_limited_8
   --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
   --reference h2 --ranks 1)
 
+# Curvature refinement at the necks instead of h / 2 (issue 26: "and the
+# curvature refinement at necks, if that is the cheaper route";
+# doc/validation.md, "Packings: curvature levels at the necks, and the
+# first closed pore"): the 8 spheres of packing_resolution_limited_8 at h
+# with one curvature level (neck cells h / 2), lambda = 6 cells of h / 2
+# (3.5 h in band cells, 3 h at the necks) or 5 (3 h and 2.5 h), 4 or 2
+# cells per curvature radius, against h and h / 2 (the same cases as
+# packing_resolution_limited_8). Measured (29 Nov 2026, session 31): 1 rank
+# beside the 154 run and two helpers' jobs, 6.8-10.6 min per curvature
+# case.
+packing_convergence_test(packing_curvature_refinement_8
+  packing_154_coupled_3d.prm 0.6 2 packing_8_like_154_3d.csv
+  0.015 0.0025,0.005,0.0075,0.01,0.0125,0.015
+  --case "h"
+  --case "h_curv1_offset6:Mesh refinement/Curvature refinement levels=1;Volume diffusion/Interior offset=6"
+  --case "h_curv1_offset5:Mesh refinement/Curvature refinement levels=1;Volume diffusion/Interior offset=5"
+  --case "h_curv1_cpr2_offset5:Mesh refinement/Curvature refinement levels=1;Mesh refinement/Cells per curvature radius=2;Volume diffusion/Interior offset=5"
+  --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
+  --reference h2 --ranks 1)
+
+# The first closed pore (issue 26: "the time the first pore closes"
+# within 10 % of the finest run; doc/validation.md, "Packings: curvature
+# levels at the necks, and the first closed pore"): the central pore of
+# eight tangent spheres like the 154's (pore_cubic_coupled_3d.prm, every
+# setting of packing_154_coupled_3d.prm, an eighth) at 2 h, h (the scene)
+# and h / 2 with lambda h and the filter fixed in um, and at h with a
+# shorter step. 2 h needs an adaptation every step (its band of 0.05 um
+# holds 1 x 1.5 + 1 cells). Measured (29 Nov 2026, session 31): 1 rank
+# beside other jobs, about 2 min at 2 h, 7 min at h, 40 min at h / 2.
+add_test(NAME packing_first_closure_cubic COMMAND
+  ${CMAKE_SOURCE_DIR}/scripts/packing_convergence.py
+  $<TARGET_FILE:levelsinter>
+  ${CMAKE_SOURCE_DIR}/parameter_files/pore_cubic_coupled_3d.prm
+  --work ${CMAKE_CURRENT_BINARY_DIR}/packing_first_closure_cubic
+  --csv ${CMAKE_SOURCE_DIR}/doc/validation_data/packing_first_closure_cubic.csv
+  --end-time 0.12 --times 0.01,0.02,0.04,0.06,0.08
+  --case "2h:Mesh refinement/Maximum level=2;Volume diffusion/Interior offset=1.5;Mesh refinement/Adapt interval=1;Mesh refinement/Band width=0.05"
+  --case "h"
+  --case "h_dt5e-4:Time/Time step=5e-4"
+  --case "h_cfl075:Time/CFL number=0.75"
+  --case "h2:Mesh refinement/Maximum level=4;Volume diffusion/Interior offset=6"
+  --reference h2 --ranks 1)
+set_tests_properties(packing_first_closure_cubic PROPERTIES
+  LABELS validation-long TIMEOUT 10800)
+
 # The surface-diffusion packing at three meshes (issue 26; doc/validation.md,
 # "Packings: resolution and step"): 8 spheres made like the 154 with the
 # settings of packing_154_surface_diffusion_3d.prm to its end time t =

@@ -15,14 +15,14 @@ namespace levelsinter
   }
 
   void
-  RemainingTime::add_step(const double t, const double dt, const double wall)
+  RemainingTime::add_step(const double t,
+                          const double dt,
+                          const double wall,
+                          const double dofs)
   {
-    if (!steps.empty())
-      {
-        costs.emplace_back(t - dt, wall - steps.back().wall);
-        if (costs.size() > cost_window)
-          costs.pop_front();
-      }
+    sizes.emplace_back(t - dt, dofs);
+    if (sizes.size() > size_window)
+      sizes.pop_front();
     steps.push_back({t, dt, wall});
     if (steps.size() > window + 1)
       steps.pop_front();
@@ -150,11 +150,11 @@ namespace levelsinter
       return -1;
 
     // The cost per step: the recent steps' mean C at their mean start time
-    // s_m, changed as (s / s_m)^p with p fitted to the longer history in
-    // log-log (a neck, and the refined cells it draws, grow as a power of
-    // time; a line in s extrapolated the early growth of the default
-    // scene 25 % too high, doc/user_guide.md "Progress"). |p| <= 2: a
-    // steeper fit is noise, not a trend.
+    // s_m, changed as the DoFs, (s / s_m)^p with p fitted to the DoFs of
+    // the longer history in log-log (a neck, and the refined cells it
+    // draws, grow as a power of time; a line in s extrapolated the early
+    // growth of the default scene 25 % too high, doc/user_guide.md
+    // "Progress"). |p| <= 2: a steeper fit is a start-up, not a trend.
     const double wall_per_step =
       (steps.back().wall - steps.front().wall) / (steps.size() - 1);
     double mean_start = 0;
@@ -164,9 +164,9 @@ namespace levelsinter
     if (mean_start > 0)
       {
         std::vector<std::pair<double, double>> logs;
-        for (const auto &[s, c] : costs)
-          if (s > 0 && c > 0)
-            logs.emplace_back(std::log(s), std::log(c));
+        for (const auto &[s, n] : sizes)
+          if (s > 0 && n > 0)
+            logs.emplace_back(std::log(s), std::log(n));
         if (logs.size() >= window)
           power = std::clamp(fit(logs).b, -2., 2.);
       }

@@ -625,7 +625,7 @@ namespace levelsinter
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
         .count();
     if (step > 0)
-      remaining_time.add_step(t, dt, wall);
+      remaining_time.add_step(t, dt, wall, dofs);
 
     if (metrics_interval.due(step, final_step))
       {

@@ -17,9 +17,13 @@ namespace levelsinter
    * where one such law dt = a + b s decides, each step multiplies dt by
    * 1 + b, so the count from s0 to s1 is exact:
    * ln(dt(s1)/dt(s0)) / ln(1 + b), or (s1 - s0)/a for b = 0. A step
-   * costs the mean wall time of the recent steps, changed as a power of
-   * the start time fitted to a longer history (a neck that grows draws
-   * more refined cells, and each step costs more).
+   * costs the mean wall time of the recent steps, changed in proportion to
+   * the mesh: its DoFs, as a power of the start time fitted to a longer
+   * history (a neck that grows draws more refined cells, and each step
+   * costs more). The trend is read from the DoFs, not from the wall
+   * times: those also follow the machine's load, and a power fitted to a
+   * load that rose over a short span (a run resumed beside other jobs)
+   * put the 154-particle run's ETA at 344 h instead of about 30 h.
    */
   class RemainingTime
   {
@@ -40,10 +44,13 @@ namespace levelsinter
       at(const double s) const;
     };
 
-    /** Call after each step with the time reached, the step and the wall
-     *  time since the start. */
+    /** Call after each step with the time reached, the step, the wall
+     *  time since the start and the DoFs the step was computed on. */
     void
-    add_step(const double t, const double dt, const double wall);
+    add_step(const double t,
+             const double dt,
+             const double wall,
+             const double dofs);
 
     /**
      * Wall seconds to reach @p end_time or to take @p steps_left more steps,
@@ -68,10 +75,10 @@ namespace levelsinter
     // cost more), short enough to follow a step that changes.
     static constexpr unsigned int window = 20;
     std::deque<Step>              steps;
-    // The cost trend is fitted over more steps: the slope of 20 noisy
-    // costs (adaptation every other step, a loaded machine) would wander.
-    static constexpr unsigned int cost_window = 100;
-    // (start time, wall time) of the last cost_window steps.
-    std::deque<std::pair<double, double>> costs;
+    // The mesh's trend is fitted over more steps: 20 steps see a few
+    // adaptations only.
+    static constexpr unsigned int size_window = 100;
+    // (start time, DoFs) of the last size_window steps.
+    std::deque<std::pair<double, double>> sizes;
   };
 } // namespace levelsinter
