@@ -13,6 +13,7 @@ per mesh, and the difference per halving of h at the study's step
 (relative to the finer mesh), and draws both to --png.
 """
 import argparse
+import csv
 import os
 import sys
 
@@ -23,11 +24,8 @@ import numpy as np
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "vd_smooth_neck_s30"))
-from neck_table import R, T_STAR  # noqa: E402
+from neck_table import R, T_STAR, finish, plot_difference  # noqa: E402
 
-import csv  # noqa: E402
-
-H_COARSE = 1 / 4  # Domain/Subdivisions = 4 on the unit square
 
 
 def read(directory):
@@ -105,27 +103,16 @@ def main():
                      ls="--" if "half" in rule else "-",
                      label=f"R/h = {r_over_h:g}" +
                      (", dt / 2" if "half" in rule else ""))
-        pairs = [((f"motion", c), ("motion", f), f"{f:g} - {c:g}")
+        pairs = [(("motion", c), ("motion", f), f"{f:g} - {c:g}")
                  for c, f in coarse_fine]
         pairs += [(("motion", r), ("motion-half-dt", r),
                    f"{r:g}: dt / 2 - dt") for r in meshes
                   if ("motion", r) in runs and ("motion-half-dt", r) in runs]
         for coarse, fine, label in pairs:
-            mc, mf = runs[coarse], runs[fine]
-            t = mf["time"][mf["time"] <= mc["time"][-1]]
-            a = np.interp(t, mc["time"], mc["neck_radius"])
-            b = np.interp(t, mf["time"], mf["neck_radius"])
-            bottom.plot(t * 1e3, 100 * (b - a) / b, label=label)
-        top.set_ylabel("neck x / R")
-        top.legend()
-        for y in (-1, 1):
-            bottom.axhline(y, color="grey", lw=0.5, ls="--")
-        bottom.set_ylabel("difference (%)")
-        bottom.set_xlabel("t (ms)")
-        bottom.legend()
-        top.set_title("Blended start, reinitialisation per interface motion")
-        fig.tight_layout()
-        fig.savefig(args.png, dpi=110)
+            plot_difference(bottom, runs[coarse], runs[fine], label)
+        finish(fig, top, bottom, "difference (%)",
+               "Blended start, reinitialisation per interface motion",
+               args.png)
 
 
 if __name__ == "__main__":
