@@ -43,9 +43,9 @@
 // x / Rbar = A t*^(1/n) over the samples with --fit-min <= x / Rbar <=
 // --fit-max (0.05, 0.3: the Nichols-Mullins window) and over all samples
 // with x / Rbar >= --fit-min, and prints the CPU time of each timer
-// section. Limits: --min-neck-growth (x_end / x_0), --max-volume-change,
-// --max-centre-shift (|d - d0| / d0), --max-length-change (|L - L0| /
-// L0), --max-neck-offset (two grains:
+// section. Limits: --min-neck-growth and --max-neck-growth (x_end / x_0),
+// --max-volume-change, --max-centre-shift (|d - d0| / d0),
+// --max-length-change (|L - L0| / L0), --max-neck-offset (two grains:
 // distance of the initial neck from the plane where the spheres meet,
 // relative to Rbar). A grain whose centre lies outside the domain is the
 // mirror image of the other across a symmetry plane (an octant scene):
@@ -707,6 +707,7 @@ namespace
     simulation.timer().print_summary();
     study::check("neck growth factor", x1 / x0, options, "min-neck-growth",
                  false);
+    study::check("neck growth factor", x1 / x0, options, "max-neck-growth");
     study::check("|volume change|", std::abs(table.finest("volume_change")),
                  options, "max-volume-change");
     study::check("|centre distance change| / d0",

@@ -213,3 +213,18 @@ add_test(NAME volume_diffusion_flux_blended_two_grains_2d
   --min-neck-growth 1.08 --max-volume-change 1e-5)
 # R/h = 12.8, 25.6 and 51.2 to t = 0.005 s (335 steps each).
 add_two_grain_neck_study(blended ${VD_BLENDED} 4 0.005 5 0.005 6 0.005)
+# The same CI scene at half the step with `Level set/Reinitialisation pace
+# = interface motion` (the reinitialisation per unit time independent of
+# the step; doc/validation.md, "Volume diffusion: the reinitialisation per
+# interface motion"). Measured: neck growth x 1.05999 at dt / 2 (334
+# steps, 34 s CPU), x 1.06005 at dt; |dV/V| 2.6e-10. With the per-step
+# default dt / 2 grew the neck x 1.157 by this time against 1.0975 at dt
+# (session 30).
+# Limits: growth 1.055-1.065 (the dt run's within 0.005, a tenth of the
+# per-step form's step dependence) and |dV/V| 1e-5.
+add_test(NAME volume_diffusion_flux_blended_reinit_motion_2d
+  COMMAND ${SD_VALIDATE} neck ${VD_BLENDED} 400 --sample-interval 1
+  --set "Mesh refinement/Maximum level=4" --set "Time/End time=0.0025"
+  --set "Time/Time step=7.5e-6"
+  --set "Level set/Reinitialisation pace=interface motion"
+  --min-neck-growth 1.055 --max-neck-growth 1.065 --max-volume-change 1e-5)

@@ -28,6 +28,28 @@ def read(directory):
             for k in ("step", "time", "neck_radius", "volume_change")}
 
 
+def plot_difference(axis, coarse, fine, label):
+    """Draw 100 (x_fine - x_coarse) / x_fine against t (ms) on axis."""
+    t = fine["time"][fine["time"] <= coarse["time"][-1]]
+    a = np.interp(t, coarse["time"], coarse["neck_radius"])
+    b = np.interp(t, fine["time"], fine["neck_radius"])
+    axis.plot(t * 1e3, 100 * (b - a) / b, label=label)
+
+
+def finish(fig, top, bottom, difference_label, title, png):
+    """Label the two panels (the 1 % aim dashed) and save to png."""
+    top.set_ylabel("neck x / R")
+    top.legend()
+    bottom.axhline(1, color="grey", lw=0.5, ls="--")
+    bottom.axhline(-1, color="grey", lw=0.5, ls="--")
+    bottom.set_ylabel(difference_label)
+    bottom.set_xlabel("t (ms)")
+    bottom.legend()
+    top.set_title(title)
+    fig.tight_layout()
+    fig.savefig(png, dpi=110)
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("runs", nargs="+")
@@ -73,21 +95,9 @@ def main():
             top.plot(m["time"] * 1e3, m["neck_radius"] / R,
                      label=f"R/h = {r_over_h:g}")
         for (c, mc), (f, mf) in zip(runs[:-1], runs[1:]):
-            t = mf["time"][mf["time"] <= mc["time"][-1]]
-            a = np.interp(t, mc["time"], mc["neck_radius"])
-            b = np.interp(t, mf["time"], mf["neck_radius"])
-            bottom.plot(t * 1e3, 100 * (b - a) / b,
-                        label=f"{f:g} - {c:g}")
-        top.set_ylabel("neck x / R")
-        top.legend()
-        bottom.axhline(1, color="grey", lw=0.5, ls="--")
-        bottom.axhline(-1, color="grey", lw=0.5, ls="--")
-        bottom.set_ylabel("difference per halving (%)")
-        bottom.set_xlabel("t (ms)")
-        bottom.legend()
-        top.set_title("Two grains by volume diffusion, blended start")
-        fig.tight_layout()
-        fig.savefig(args.png, dpi=110)
+            plot_difference(bottom, mc, mf, f"{f:g} - {c:g}")
+        finish(fig, top, bottom, "difference per halving (%)",
+               "Two grains by volume diffusion, blended start", args.png)
 
 
 if __name__ == "__main__":

@@ -53,6 +53,18 @@ namespace levelsinter
         "not rebuilt every step. 0 reinitialises everywhere at full "
         "strength, as in the paper (doc/numerics.md).");
       prm.declare_entry(
+        "Reinitialisation pace",
+        "step",
+        Patterns::Selection("step|interface motion"),
+        "step: the strength and the diffusion act per step, so a smaller "
+        "step reinitialises more per unit time (a fixed-step study in dt "
+        "or h then measures the reinitialisation too). interface motion: "
+        "each step takes the share min(1, v dt / h_min) of them, v the "
+        "largest speed near the interface (the CFL number's), i.e. they "
+        "act per time the fastest interface point takes to cross the "
+        "finest cell: the same per unit time for any step, and never more "
+        "per step than with 'step' (doc/numerics.md).");
+      prm.declare_entry(
         "Solid reinitialisation from band cells",
         "auto",
         Patterns::Selection("auto|true|false"),
@@ -94,6 +106,12 @@ namespace levelsinter
     reinitialization_strength  = prm.get_double("Reinitialisation strength");
     reinitialization_diffusion = prm.get_double("Reinitialisation diffusion");
     reinitialization_tolerance = prm.get_double("Reinitialisation tolerance");
+    reinitialization_pace      = read_selection<ReinitializationPace>(
+      prm,
+      "Level set",
+      "Reinitialisation pace",
+      {{"step", ReinitializationPace::step},
+       {"interface motion", ReinitializationPace::interface_motion}});
     solid_reinitialization     = read_selection<SolidReinitialization>(
       prm,
       "Level set",

@@ -123,7 +123,9 @@ namespace levelsinter
                  scene.level_set.reinitialization_tolerance,
                  scene.level_set.solid_reinitialization_from_band ?
                    scene.band_cell_size() :
-                   0.},
+                   0.,
+                 scene.level_set.reinitialization_pace ==
+                   LevelSetParameters::ReinitializationPace::interface_motion},
                 timer_output)
     , postprocessors(make_scene_postprocessors<dim>(scene,
                                                     mechanisms,
@@ -578,7 +580,7 @@ namespace levelsinter
     return any ? transport.advance(alpha,
                                    correction_velocity,
                                    dt,
-                                   /*reinitialise=*/false) :
+                                   /*share=*/0.) :
                  0;
   }
 
@@ -731,7 +733,11 @@ namespace levelsinter
               dt = std::min(dt, choose_time_step(t));
               compute_interface_velocity(t, dt);
             }
-          last_iterations = transport.advance(alpha, velocity, dt);
+          last_iterations = transport.advance(
+            alpha,
+            velocity,
+            dt,
+            transport.reinitialisation_share(dt, interface_speed));
           for (auto &mechanism : mechanisms)
             mechanism->check_step(alpha);
           last_iterations += correct_step(dt);

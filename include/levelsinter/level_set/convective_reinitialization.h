@@ -17,8 +17,9 @@ namespace levelsinter
    *
    *   d alpha/dt + (v + lambda v_r) . grad alpha = lambda sgn(alpha) g(alpha),
    *
-   * lambda = h / dt (times a strength; h the finest cell size, or in the
-   * solid optionally the band's), v_r = sgn(alpha) grad alpha /
+   * lambda = h / dt (times a strength and the step's share of it, 1 or
+   * v dt / h_min; h the finest cell size, or in the solid optionally the
+   * band's), v_r = sgn(alpha) grad alpha /
    * |grad alpha| and g the filter's gradient-norm target (Eq. 67). As in
    * the paper, v_r and the right-hand side are taken from the previous step
    * (linearisation), the sign is smoothed as
@@ -54,6 +55,10 @@ namespace levelsinter
       // If positive, lambda's h in the solid: the cell size at the band's
       // level (`Maximum level`). 0: the finest cell everywhere.
       double solid_cell_size = 0;
+      // false: the strength and the diffusion act per step. true: per time
+      // the fastest interface point takes to cross the finest cell
+      // (reinitialisation_share()).
+      bool per_interface_motion = false;
     };
 
     ConvectiveReinitialization(const LevelSetFilter &filter,
@@ -65,9 +70,19 @@ namespace levelsinter
     setup_system(const LevelSetField<dim> &level_set);
 
     /**
+     * The share of the full strength and diffusion that a step of dt
+     * applies: 1 per step; per interface motion min(1, v dt / h_min), with
+     * v the largest speed near the interface, so that the reinitialisation
+     * per unit time does not depend on the step (doc/numerics.md).
+     */
+    double
+    reinitialisation_share(const double dt, const double interface_speed) const;
+
+    /**
      * Advance alpha by dt with the given velocity (evaluated by the caller
      * at the time the theta scheme needs). Returns the GMRES iterations;
-     * throws if the solver fails. With @p reinitialise false the step is
+     * throws if the solver fails. @p share scales the reinitialisation's
+     * strength and diffusion (reinitialisation_share()); 0 makes the step
      * pure transport (a small correction after a step that has already
      * been reinitialised: the reinitialisation moves the interface by a
      * fixed amount per call, so a second one per step costs accuracy).
@@ -76,14 +91,14 @@ namespace levelsinter
     advance(LevelSetField<dim>       &level_set,
             const VelocityField<dim> &velocity,
             const double              dt,
-            const bool                reinitialise = true);
+            const double              share);
 
   private:
     void
     assemble(const LevelSetField<dim>       &level_set,
              const VelocityField<dim>       &velocity,
              const double                    dt,
-             const bool                      reinitialise,
+             const double                    share,
              TrilinosWrappers::MPI::Vector &rhs);
 
     const LevelSetFilter             filter;

@@ -15,6 +15,13 @@ namespace levelsinter
       tanh  // Eq. 69
     };
 
+    enum class ReinitializationPace
+    {
+      step,            // strength and diffusion per step (lambda = h / dt)
+      interface_motion // per time the fastest interface point takes to
+                       // cross the finest cell
+    };
+
     enum class SolidReinitialization
     {
       automatic, // band cells for surface diffusion without viscous flow
@@ -37,6 +44,7 @@ namespace levelsinter
     double       reinitialization_strength  = 0.25;
     double       reinitialization_diffusion = 0.05;
     double       reinitialization_tolerance = 0.25;
+    ReinitializationPace reinitialization_pace = ReinitializationPace::step;
     SolidReinitialization solid_reinitialization =
       SolidReinitialization::automatic;
     // The choice above with 'automatic' resolved from the mechanisms
