@@ -115,6 +115,14 @@ if a check fails.
       disc of the solid's area A; at every row of metrics.csv with time >=
       T_FROM the interface length within RELATIVE_TOLERANCE of 2 sqrt(pi
       A); prints the range and the rigid centres' distance over those rows.
+  check_grains.py bracket RUN FAST FACTOR T_TO
+      a pair of two materials (RUN) between the pairs of one material
+      each: FAST, a run with the faster grain's coefficients on both
+      grains, and the same with both coefficients times FACTOR (< 1),
+      which is FAST at FACTOR t (the flow is linear in the coefficients).
+      At every row of RUN with 0 < time <= T_TO the centres' approach
+      (centre_distance_change) lies between FAST's at FACTOR t and at t
+      (read by linear interpolation); prints how far inside.
 """
 import csv
 import math
@@ -209,6 +217,36 @@ def equal(run, tolerance):
               f"{column} mean {mean:.5g}, spread {spread:.3g}")
         if spread > tolerance:
             fail(f"{column} spread {spread:.3g} > {tolerance}")
+
+
+def bracket(run, fast, factor, t_to):
+    def history(path):
+        table = [(r["time"], -r["centre_distance_change"])
+                 for r in rows(path + "/grain_boundaries.csv")]
+        return sorted(table)
+
+    def at(table, t):
+        for (t0, v0), (t1, v1) in zip(table, table[1:]):
+            if t0 <= t <= t1:
+                return v0 + (v1 - v0) * (t - t0) / (t1 - t0)
+        fail(f"time {t:g} outside the reference run")
+
+    reference = history(fast)
+    worst, count = math.inf, 0
+    for t, approach in history(run):
+        if not 0 < t <= t_to:
+            continue
+        low, high = at(reference, factor * t), at(reference, t)
+        # Where in [low, high] the pair lies: 0 at the slow bound, 1 at the
+        # fast one.
+        share = (approach - low) / (high - low) if high > low else math.nan
+        worst = min(worst, share, 1 - share)
+        count += 1
+    print(f"bracket: {count} rows to t = {t_to:g}; the approach lies "
+          f"inside the one-material bounds by at least {worst:.3g} of "
+          f"their gap")
+    if count == 0 or not worst > 0:
+        fail("the two-material pair's approach leaves its bounds")
 
 
 def same(run_a, run_b, column, tolerance):
@@ -679,6 +717,8 @@ if __name__ == "__main__":
         options = dict(zip(args[7::2], args[8::2]))
         spacing(args[0], float(args[1]), int(args[2]), float(args[3]), args[4],
                 float(args[5]), float(args[6]), options.get("--csv"))
+    elif mode == "bracket":
+        bracket(args[0], args[1], float(args[2]), float(args[3]))
     elif mode == "same":
         same(args[0], args[1], args[2], float(args[3]))
     else:

@@ -212,6 +212,7 @@ namespace levelsinter
     std::vector<Tensor<1, dim>> alpha_gradients(nq), lag_gradients(nq),
       normal_gradients(nq);
     std::vector<double> divergence(nq), radial_normal(nq), mu(nq);
+    std::vector<double> mobility_factor(nq, 1.);
 
     // DoFs no band cell touches get kappa = v_s = 0 (identity rows).
     Vector touched;
@@ -247,6 +248,8 @@ namespace levelsinter
               for (unsigned int q = 0; q < nq; ++q)
                 divergence[q] += mu[q];
             }
+          if (mobility)
+            fe_values.get_function_values(*mobility, mobility_factor);
           m_kk = 0;
           m_kv = 0;
           m_vk = 0;
@@ -288,7 +291,8 @@ namespace levelsinter
                       const double tangential = P_grad_i * grad_j * JxW;
                       m_kk(i, j) += mass;
                       m_kv(i, j) += kv_factor * (grad_i * grad_j) * JxW / A;
-                      m_vk(i, j) += vk_factor * g * tangential;
+                      m_vk(i, j) +=
+                        vk_factor * mobility_factor[q] * g * tangential;
                       m_vv(i, j) += g * mass;
                     }
                   // kappa = div N (Eq. 80 at dt = 0), not integrated by

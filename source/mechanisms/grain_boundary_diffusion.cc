@@ -28,6 +28,27 @@ namespace levelsinter
     // 32, the axisymmetric pair, R/h = 8").
     constexpr double settled_neck_kernels = 2;
 
+    // The grains of the power cells @p cells (the candidates @p near) that
+    // own @p x: the least power's, and every other within a tie of it. A
+    // node on a grain boundary (equal powers: mesh lines often lie on the
+    // plane of equal grains) belongs to all of them, so that a symmetric
+    // pair stays symmetric.
+    template <int dim>
+    std::vector<unsigned int>
+    tied_owners(const PowerCells<dim>           &cells,
+                const Point<dim>                &x,
+                const std::vector<unsigned int> &near)
+    {
+      const unsigned int owner = cells.owner(x, near);
+      const double       tie =
+        cells.power(x, owner) + 1e-9 * std::pow(cells.radius(owner), 2);
+      std::vector<unsigned int> tied;
+      for (const unsigned int k : near)
+        if (cells.power(x, k) <= tie)
+          tied.push_back(k);
+      return tied;
+    }
+
     // The solution of matrix x = rhs with no component in the matrix's
     // null space (singular values below 1e-10 of the largest count as
     // zero), by the singular-value decomposition.
@@ -83,6 +104,41 @@ namespace levelsinter
         [this](const LevelSetField<dim> &alpha, auto &mu) {
           triple_line_potential(alpha, mu);
         });
+    if (!parameters.surface_factors.empty())
+      surface_diffusion.set_mobility_source(
+        [this](const LevelSetField<dim> &alpha, auto &factor) {
+          surface_mobility_factors(alpha, factor);
+        });
+  }
+
+  template <int dim>
+  void
+  GrainBoundaryDiffusion<dim>::surface_mobility_factors(
+    const LevelSetField<dim>      &alpha,
+    TrilinosWrappers::MPI::Vector &factor) const
+  {
+    // Each node takes its grain's factor of C_s, a node on a grain boundary
+    // the mean of its grains': the coefficient jumps within the cells about
+    // the boundary's plane, and the weak form keeps the flux C_s grad_s
+    // kappa continuous across it.
+    const PowerCells<dim>     cells = grains();
+    std::vector<unsigned int> near;
+    for (const auto &cell : alpha.dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cells.candidates(cell->center(), cell->diameter() / 2, near);
+          for (const unsigned int v : cell->vertex_indices())
+            if (const auto i = cell->vertex_dof_index(v, 0);
+                alpha.locally_owned().is_element(i))
+              {
+                const auto tied = tied_owners(cells, cell->vertex(v), near);
+                double     sum  = 0;
+                for (const unsigned int k : tied)
+                  sum += parameters.surface_factor(k);
+                factor(i) = sum / tied.size();
+              }
+        }
+    factor.compress(VectorOperation::insert);
   }
 
   template <int dim>
@@ -362,7 +418,9 @@ namespace levelsinter
             contact.explicit_root_curvature = sum[3] / sum[2];
           if (parameters.implicit_contact)
             contact.damping =
-              mobility * contact_stiffness(boundaries[b], sum, dt) * dt /
+              mobility *
+              parameters.boundary_factor(boundaries[b].i, boundaries[b].j) *
+              contact_stiffness(boundaries[b], sum, dt) * dt /
               boundaries[b].resistance;
           last_contacts.push_back(contact);
           deposition_weight.push_back(sum[0]);
@@ -465,9 +523,15 @@ namespace levelsinter
     // within the step over (C_s dt)^(1/4) (doc/numerics.md, "Settling:
     // the contact law's step"): a bump of width L > l has the curvature
     // (l / L)^3 of the kernel's.
+    // With per-grain materials the spread is the mean of the two grains'
+    // surfaces'.
     const double l = deposition_width;
-    const double L =
-      std::max(l, std::pow(surface_diffusion.coefficient() * dt, 0.25));
+    const double c_s =
+      surface_diffusion.coefficient() *
+      (parameters.surface_factor(boundary.i) +
+       parameters.surface_factor(boundary.j)) /
+      2;
+    const double L = std::max(l, std::pow(c_s * dt, 0.25));
     return boundary.area * boundary.area_in_domain / sum[0] * sum[4] /
            sum[2] * std::pow(l / L, 3);
   }
@@ -480,8 +544,10 @@ namespace levelsinter
     std::fill(trial_velocity.begin(), trial_velocity.end(), Tensor<1, dim>());
     if (last_contacts.empty())
       return;
-    // In units gamma_s = C_gb = 1: K_ij = G(a), F_ij = P sin(psi/2) -
-    // A kappa_root; V scales with C_gb (the mobility). The implicit law
+    // In units gamma_s = C_gb = 1: K_ij = G(a) / f_ij, F_ij = P sin(psi/2)
+    // - A kappa_root, f_ij the boundary's factor of C_gb (per-grain
+    // materials; 1 for one material); V scales with C_gb (the mobility).
+    // The implicit law
     // reads F after the step's approach, F - S u dt: the approach's
     // resistance becomes G (1 + g), g = C_gb S dt / G (the contact's
     // damping), sliding keeps G.
@@ -493,7 +559,8 @@ namespace levelsinter
       {
         const auto    &b = contact.boundary;
         const auto    &m = b.normal;
-        const double   K = b.resistance;
+        const double   K =
+          b.resistance / parameters.boundary_factor(b.i, b.j);
         const double   F = b.perimeter * sin_half - b.area * contact.root_curvature;
         for (unsigned int p = 0; p < dim; ++p)
           {
@@ -542,22 +609,13 @@ namespace levelsinter
           cells.candidates(cell->center(), cell->diameter() / 2, near);
           near_cell = cell->active_cell_index();
         }
-      // A node on a grain boundary (equal powers: mesh lines often lie on
-      // the plane of equal grains) moves with the mean of its grains, so
-      // that a symmetric pair stays symmetric.
-      const Point<dim>   x      = cell->vertex(v);
-      const unsigned int owner  = cells.owner(x, near);
-      const double       tie    = cells.power(x, owner) +
-                         1e-9 * std::pow(cells.radius(owner), 2);
-      Tensor<1, dim>     value;
-      unsigned int       n_ties = 0;
-      for (const unsigned int k : near)
-        if (cells.power(x, k) <= tie)
-          {
-            value += trial_velocity[k];
-            ++n_ties;
-          }
-      value /= n_ties;
+      // A node on a grain boundary moves with the mean of its grains.
+      const Point<dim> x    = cell->vertex(v);
+      const auto       tied = tied_owners(cells, x, near);
+      Tensor<1, dim>   value;
+      for (const unsigned int k : tied)
+        value += trial_velocity[k];
+      value /= tied.size();
       const auto i = cell->vertex_dof_index(v, 0);
       for (unsigned int k = 0; k < last_contacts.size(); ++k)
         if (const double w =

@@ -75,7 +75,7 @@ namespace levelsinter
                                       const double        dt,
                                       VelocityField<dim> &velocity)
   {
-    update_potential(alpha);
+    update_sources(alpha);
     iterations = solver.solve(alpha, mobility, dt, previous_velocity);
     add_normal_velocity(alpha, velocity);
   }
@@ -86,32 +86,33 @@ namespace levelsinter
                                             const double,
                                             VelocityField<dim> &velocity)
   {
-    update_potential(alpha);
+    update_sources(alpha);
     iterations = solver.solve(alpha, mobility, 0, previous_velocity);
     add_normal_velocity(alpha, velocity);
   }
 
   template <int dim>
   void
-  SurfaceDiffusion<dim>::set_potential_source(
-    const std::function<void(const LevelSetField<dim> &,
-                             TrilinosWrappers::MPI::Vector &)> &source)
+  SurfaceDiffusion<dim>::update_sources(const LevelSetField<dim> &alpha)
   {
-    potential_source = source;
-  }
-
-  template <int dim>
-  void
-  SurfaceDiffusion<dim>::update_potential(const LevelSetField<dim> &alpha)
-  {
-    if (!potential_source)
-      return;
     const MPI_Comm comm = alpha.dof_handler().get_communicator();
-    TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
-    potential_source(alpha, owned);
-    potential.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
-    potential = owned;
-    solver.set_potential(&potential);
+    // Each source writes its owned entries; the solver reads them ghosted.
+    const auto update = [&](const auto &source, auto &vector) {
+      TrilinosWrappers::MPI::Vector owned(alpha.locally_owned(), comm);
+      source(alpha, owned);
+      vector.reinit(alpha.locally_owned(), alpha.locally_relevant(), comm);
+      vector = owned;
+    };
+    if (potential_source)
+      {
+        update(potential_source, potential);
+        solver.set_potential(&potential);
+      }
+    if (mobility_source)
+      {
+        update(mobility_source, mobility_factor);
+        solver.set_mobility(&mobility_factor);
+      }
   }
 
   template <int dim>

@@ -2,9 +2,30 @@
 #include <levelsinter/scene/parameter_entries.h>
 
 #include <cmath>
+#include <string>
 
 namespace levelsinter
 {
+  namespace
+  {
+    // A list of per-grain factors of the current subsection: empty, or
+    // positive numbers (their count is checked against the particles by
+    // SceneParameters::check_grains).
+    std::vector<double>
+    read_factors(ParameterHandler &prm, const std::string &entry)
+    {
+      const auto factors = Utilities::string_to_double(
+        Utilities::split_string_list(prm.get(entry), ','));
+      for (const double f : factors)
+        if (!(f > 0))
+          fail_entry("Grain boundaries/" + entry,
+                     "every factor must be positive (a grain without "
+                     "diffusion is not a material the contact law and the "
+                     "surface-diffusion solve can hold)");
+      return factors;
+    }
+  } // namespace
+
   void
   GrainBoundaryParameters::declare(ParameterHandler &prm)
   {
@@ -107,6 +128,25 @@ namespace levelsinter
                         "(doc/numerics.md, \"Settling: the sharp contact "
                         "radius\"). Where the two differ by more than k "
                         "cells (a neck still forming) the rays' a is kept.");
+      prm.declare_entry("Surface diffusion factors",
+                        "",
+                        Patterns::List(Patterns::Double(0), 0, 1000000, ","),
+                        "Per-grain materials: one positive factor per "
+                        "particle (in their order), the grain's surface "
+                        "diffusion coefficient in units of Surface "
+                        "diffusion/Coefficient. A surface node takes its "
+                        "grain's factor (the mean of the grains it lies "
+                        "between on a grain boundary). Empty: 1 for every "
+                        "grain, one material (doc/numerics.md, \"Per-grain "
+                        "materials\").");
+      prm.declare_entry("Coefficient factors",
+                        "",
+                        Patterns::List(Patterns::Double(0), 0, 1000000, ","),
+                        "Per-grain materials: one positive factor per "
+                        "particle, the grain's C_gb in units of Grain "
+                        "boundaries/Coefficient; the boundary of grains i "
+                        "and j diffuses with the mean of their factors. "
+                        "Empty: 1 for every grain.");
     }
     prm.leave_subsection();
   }
@@ -125,6 +165,8 @@ namespace levelsinter
     conserve_volumes   = prm.get_bool("Conserve grain volumes");
     implicit_contact   = prm.get_bool("Implicit contact law");
     sharp_contact      = prm.get_bool("Sharp contact radius");
+    surface_factors    = read_factors(prm, "Surface diffusion factors");
+    coefficient_factors = read_factors(prm, "Coefficient factors");
     prm.leave_subsection();
     if (!enabled)
       return;
@@ -159,5 +201,20 @@ namespace levelsinter
   GrainBoundaryParameters::triple_line_turning() const
   {
     return 2 * std::asin(energy_ratio / 2);
+  }
+
+  double
+  GrainBoundaryParameters::surface_factor(const unsigned int i) const
+  {
+    return surface_factors.empty() ? 1. : surface_factors[i];
+  }
+
+  double
+  GrainBoundaryParameters::boundary_factor(const unsigned int i,
+                                           const unsigned int j) const
+  {
+    return coefficient_factors.empty() ?
+             1. :
+             (coefficient_factors[i] + coefficient_factors[j]) / 2;
   }
 } // namespace levelsinter

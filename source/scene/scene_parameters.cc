@@ -9,6 +9,8 @@
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace levelsinter
 {
@@ -518,6 +520,19 @@ namespace levelsinter
       fail_entry(entry,
                  "needs two or more particles in Geometry/Particles (each "
                  "particle is a grain)");
+    // Per-grain materials: a factor for every grain, or none.
+    for (const auto &[name, factors] :
+         {std::make_pair("Surface diffusion factors",
+                         &grain_boundaries.surface_factors),
+          std::make_pair("Coefficient factors",
+                         &grain_boundaries.coefficient_factors)})
+      if (!factors->empty() && factors->size() != geometry.particles.size())
+        fail_entry(std::string("Grain boundaries/") + name,
+                   "gives " + std::to_string(factors->size()) +
+                     " factors for " +
+                     std::to_string(geometry.particles.size()) +
+                     " grains: give one per particle, or none (one "
+                     "material)");
     // A grain boundary on the domain's boundary is not measured: a grain
     // lies on a symmetry plane through its centre or off the planes.
     for (unsigned int i = 0; i < geometry.particles.size(); ++i)

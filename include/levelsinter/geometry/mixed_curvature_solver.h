@@ -138,6 +138,19 @@ namespace levelsinter
       potential = mu;
     }
 
+    /**
+     * A factor c of the coefficient (ghosted, on the level set's DoFs;
+     * nullptr: 1) from the next solve on: v_s = div_s (c C grad_s kappa),
+     * the weak form's flux c C grad_s kappa continuous where c jumps.
+     * Per-grain materials of grain boundaries (GrainBoundaryDiffusion);
+     * the vector must live until the solve.
+     */
+    void
+    set_mobility(const Vector *c)
+    {
+      mobility = c;
+    }
+
   private:
     void
     assemble(const LevelSetField<dim> &level_set,
@@ -167,6 +180,7 @@ namespace levelsinter
     Vector                         velocity;
     std::array<Vector, dim>        normals;
     const Vector                  *potential = nullptr;
+    const Vector                  *mobility  = nullptr;
 
   public:
     /** CPU seconds of the last linear solve, summed over the ranks. */

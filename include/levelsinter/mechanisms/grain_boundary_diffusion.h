@@ -153,6 +153,13 @@ namespace levelsinter
     triple_line_potential(const LevelSetField<dim>      &alpha,
                           TrilinosWrappers::MPI::Vector &mu);
 
+    // Per-grain materials: each node's factor of C_s (locally owned
+    // entries of @p factor, on the level set's DoFs), for
+    // SurfaceDiffusion::set_mobility_source.
+    void
+    surface_mobility_factors(const LevelSetField<dim>      &alpha,
+                             TrilinosWrappers::MPI::Vector &factor) const;
+
     // The kernel w of @p boundary at the vertices of @p cell into @p w;
     // false if it is zero at all of them. With @p kink the sharp
     // condition's kernel (narrow across the plane, flat along it over the

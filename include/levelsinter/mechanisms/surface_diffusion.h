@@ -93,17 +93,39 @@ namespace levelsinter
     }
 
     /**
-     * A chemical potential mu that @p source writes (on the level set's
-     * DoFs, locally owned entries) before each solve, added to the
-     * curvature: v_s = C Delta_s (kappa + mu) (MixedCurvatureSolver::
-     * set_potential). The triple-line condition of grain boundaries.
+     * Writes a field on the level set's DoFs (the locally owned entries of
+     * its vector) at the level set's state, before each solve.
+     */
+    using NodalSource =
+      std::function<void(const LevelSetField<dim> &,
+                         TrilinosWrappers::MPI::Vector &)>;
+
+    /**
+     * A chemical potential mu from @p source, added to the curvature: v_s
+     * = C Delta_s (kappa + mu) (MixedCurvatureSolver::set_potential). The
+     * triple-line condition of grain boundaries.
      */
     void
-    set_potential_source(
-      const std::function<void(const LevelSetField<dim> &,
-                               TrilinosWrappers::MPI::Vector &)> &source);
+    set_potential_source(const NodalSource &source)
+    {
+      potential_source = source;
+    }
 
-    /** The coefficient of Delta_s kappa in the time unit of the scene. */
+    /**
+     * A factor c of the coefficient at each node from @p source: v_s =
+     * div_s (c C grad_s kappa) (MixedCurvatureSolver::set_mobility).
+     * Per-grain materials of grain boundaries.
+     */
+    void
+    set_mobility_source(const NodalSource &source)
+    {
+      mobility_source = source;
+    }
+
+    /**
+     * The coefficient of Delta_s kappa in the time unit of the scene (with
+     * a mobility source, the one its factors multiply).
+     */
     double
     coefficient() const
     {
@@ -111,9 +133,10 @@ namespace levelsinter
     }
 
   private:
-    // mu of the potential source at the level set's state (ghosted).
+    // mu of the potential source and c of the mobility source at the
+    // level set's state (ghosted).
     void
-    update_potential(const LevelSetField<dim> &alpha);
+    update_sources(const LevelSetField<dim> &alpha);
 
     // v = v_s N_alpha (Eq. 84) of the last solve, added to @p velocity.
     void
@@ -128,10 +151,10 @@ namespace levelsinter
     // step used.
     TrilinosWrappers::MPI::Vector previous_velocity;
     TrilinosWrappers::MPI::Vector lag_of_last_step;
-    std::function<void(const LevelSetField<dim> &,
-                       TrilinosWrappers::MPI::Vector &)>
-                                  potential_source;
+    NodalSource                   potential_source;
     TrilinosWrappers::MPI::Vector potential;
+    NodalSource                   mobility_source;
+    TrilinosWrappers::MPI::Vector mobility_factor;
     unsigned int                  iterations = 0;
   };
 } // namespace levelsinter

@@ -2,6 +2,8 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <vector>
+
 namespace levelsinter
 {
   using namespace dealii;
@@ -37,6 +39,23 @@ namespace levelsinter
     double
     triple_line_turning() const;
 
+    /**
+     * The factor of C_s on grain @p i's surface (Surface diffusion
+     * factors; 1 without them).
+     */
+    double
+    surface_factor(const unsigned int i) const;
+
+    /**
+     * The factor of C_gb on the grain boundary of grains @p i and @p j:
+     * the mean of the grains' Coefficient factors (1 without them). The
+     * boundary's layer of width delta_gb lies half in each grain, and the
+     * two halves carry the flux along it side by side (doc/numerics.md,
+     * "Per-grain materials").
+     */
+    double
+    boundary_factor(const unsigned int i, const unsigned int j) const;
+
     bool   enabled            = false;
     double energy_ratio       = 0; // gamma_gb / gamma_s, in [0, 2)
     double coefficient        = 0; // C_gb = delta_gb D_gb gamma_s Omega / kT
@@ -47,5 +66,8 @@ namespace levelsinter
     bool   conserve_volumes   = false; // planes moved to keep each grain's volume
     bool   implicit_contact   = false; // the contact law implicit in the approach
     bool   sharp_contact      = false; // the law's a at the sharp triple line
+    // Per grain (empty: one material): factors of C_s and of C_gb.
+    std::vector<double> surface_factors;
+    std::vector<double> coefficient_factors;
   };
 } // namespace levelsinter
