@@ -128,10 +128,11 @@ metrics_unchanged(coupled_packing_8_3d_small_differences
 # steps. Measured (29 Nov 2026): the central pore cut off at t = 0.078 s
 # (step 78), the largest |dV/V| 2.6e-3 (the volume correction's lag while
 # the pore fills; 1e-5 before it), 311 s wall to t = 0.12 s on a loaded
-# core. Limits: closure in 0.074-0.082 s (+-5 %: the step's own error is
-# +13 %, a cap of 5e-4 s closing it at 0.088 s, and h / 2 closes it 26 %
-# earlier; a change of the discretisation of that size fails, the same one
-# lands on the same step) and |dV/V| below 5e-3 (2x the measured).
+# core. Limits: closure in 0.074-0.082 s (+-5 %: a cap of 5e-4 s closes it
+# at 0.088 s, +13 %, and h / 2 does not cut the pore off by t = 0.0987 s;
+# a change of the discretisation of that size fails, the same one lands on
+# the same step) and |dV/V| below 5e-3 (2x the measured). A guard of the
+# scene as it runs at this h, not a converged closure time.
 topology_run(coupled_pore_cubic_3d 1 --set "Time/End time=0.08"
   ${CMAKE_SOURCE_DIR}/parameter_files/pore_cubic_coupled_3d.prm)
 topology_check(coupled_pore_cubic_3d_check coupled_pore_cubic_3d 3
