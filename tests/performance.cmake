@@ -162,9 +162,9 @@ function(packing_convergence_test name scene box cells particles end times)
 endfunction()
 packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
   0.9 3 packing_27_like_154_3d.csv 0.01 0.0025,0.005,0.01
-  --case "cfl4_adapt1:Time/CFL number=4;Mesh refinement/Adapt interval=1;Mesh refinement/Band width=0.048"
-  --case "cfl2_interval2:Time/CFL number=2;Mesh refinement/Band width=0.048;Volume diffusion/Elastic solve interval=2"
-  --case "cfl2:Time/CFL number=2;Mesh refinement/Band width=0.048"
+  --case "cfl4_adapt1:Time/CFL number=4\\;Mesh refinement/Adapt interval=1\\;Mesh refinement/Band width=0.048"
+  --case "cfl2_interval2:Time/CFL number=2\\;Mesh refinement/Band width=0.048\\;Volume diffusion/Elastic solve interval=2"
+  --case "cfl2:Time/CFL number=2\\;Mesh refinement/Band width=0.048"
   --case "cfl1:Time/CFL number=1"
   --case "reference"
   --reference reference
@@ -181,8 +181,8 @@ packing_convergence_test(packing_convergence_27 packing_154_coupled_3d.prm
 # machine shared with two other sessions: 1-2 h of wall per case.
 packing_convergence_test(packing_solid_27 packing_154_coupled_3d.prm
   0.9 3 packing_27_like_154_3d.csv 0.005 0.0025,0.005
-  --case "coarse:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.09;Level set/Filter thickness=0.112"
-  --case "cfl1.5_interval2:Time/CFL number=1.5;Volume diffusion/Elastic solve interval=2"
+  --case "coarse:Mesh refinement/Maximum level=4\\;Mesh refinement/Band width=0.09\\;Level set/Filter thickness=0.112"
+  --case "cfl1.5_interval2:Time/CFL number=1.5\\;Volume diffusion/Elastic solve interval=2"
   --case "cfl1.5:Time/CFL number=1.5"
   --case "reference"
   --reference reference
@@ -197,7 +197,7 @@ packing_convergence_test(packing_solid_27 packing_154_coupled_3d.prm
 # per case, two cases at a time beside helpers' jobs: about 2.5 h of CPU.
 packing_convergence_test(packing_step_27 packing_154_coupled_3d.prm
   0.9 3 packing_27_like_154_3d.csv 0.02 0.005,0.01,0.02
-  --case "cfl3_cap2e-3:Time/CFL number=3;Time/Time step=2e-3;Mesh refinement/Adapt interval=1"
+  --case "cfl3_cap2e-3:Time/CFL number=3\\;Time/Time step=2e-3\\;Mesh refinement/Adapt interval=1"
   --case "cfl1.5:Time/CFL number=1.5"
   --case "reference"
   --reference reference
@@ -217,7 +217,7 @@ packing_convergence_test(packing_resolution_coupled_8
   packing_154_coupled_3d.prm 0.6 2 packing_8_like_154_3d.csv
   0.005 0.001,0.0025,0.005
   --case "h"
-  --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
+  --case "h2:Mesh refinement/Minimum level=2\\;Mesh refinement/Maximum level=6\\;Volume diffusion/Interior offset=6"
   --reference h2 --ranks 1
   --set "Volume diffusion/Extrapolation=linear")
 
@@ -229,39 +229,46 @@ packing_convergence_test(packing_resolution_coupled_8
 # Measured (29 Nov 2026, session 30): 1 rank beside two helpers' jobs,
 # 2.5 min at h, 4.5 min with the shorter step, 25 min (limited) and 31 min
 # (linear, its step cut to 2.3e-4 s by the ridge) at h / 2.
+# h / 2 of the 8 spheres like the 154 with the physics fixed (xi's depth
+# lambda h = 0.028 um: 6 cells of h / 2; band and filter in um).
+set(PACKING_8_H2
+  "Mesh refinement/Minimum level=2\\;Mesh refinement/Maximum level=6\\;Volume diffusion/Interior offset=6")
+set(PACKING_8_TIMES 0.0025,0.005,0.0075,0.01,0.0125,0.015)
 packing_convergence_test(packing_resolution_limited_8
   packing_154_coupled_3d.prm 0.6 2 packing_8_like_154_3d.csv
-  0.015 0.0025,0.005,0.0075,0.01,0.0125,0.015
+  0.015 ${PACKING_8_TIMES}
   --case "h_linear:Volume diffusion/Extrapolation=linear"
-  --case "h2_linear:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6;Volume diffusion/Extrapolation=linear"
+  --case "h2_linear:${PACKING_8_H2}\\;Volume diffusion/Extrapolation=linear"
   --case "h_dt5e-4:Time/Time step=5e-4"
   --case "h"
-  --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
+  --case "h2:${PACKING_8_H2}"
   --reference h2 --ranks 1)
 
 # Curvature refinement at the necks instead of h / 2 (issue 26: "and the
 # curvature refinement at necks, if that is the cheaper route";
-# doc/validation.md, "Packings: curvature levels at the necks, and the
-# first closed pore"): the 8 spheres of packing_resolution_limited_8 at h
+# doc/validation.md, "Packings: curvature levels at the necks, the
+# density's start, the first closed pore"): the 8 spheres of packing_resolution_limited_8 at h
 # with one curvature level (neck cells h / 2), lambda = 6 cells of h / 2
 # (3.5 h in band cells, 3 h at the necks) or 5 (3 h and 2.5 h), 4 or 2
 # cells per curvature radius, against h and h / 2 (the same cases as
 # packing_resolution_limited_8). Measured (29 Nov 2026, session 31): 1 rank
 # beside the 154 run and two helpers' jobs, 6.8-10.6 min per curvature
 # case.
+set(CURVATURE_LEVEL "Mesh refinement/Curvature refinement levels=1")
 packing_convergence_test(packing_curvature_refinement_8
   packing_154_coupled_3d.prm 0.6 2 packing_8_like_154_3d.csv
-  0.015 0.0025,0.005,0.0075,0.01,0.0125,0.015
+  0.015 ${PACKING_8_TIMES}
   --case "h"
-  --case "h_curv1_offset6:Mesh refinement/Curvature refinement levels=1;Volume diffusion/Interior offset=6"
-  --case "h_curv1_offset5:Mesh refinement/Curvature refinement levels=1;Volume diffusion/Interior offset=5"
-  --case "h_curv1_cpr2_offset5:Mesh refinement/Curvature refinement levels=1;Mesh refinement/Cells per curvature radius=2;Volume diffusion/Interior offset=5"
-  --case "h2:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Volume diffusion/Interior offset=6"
+  --case "h_curv1_offset6:${CURVATURE_LEVEL}\\;Volume diffusion/Interior offset=6"
+  --case "h_curv1_offset5:${CURVATURE_LEVEL}\\;Volume diffusion/Interior offset=5"
+  --case "h_curv1_cpr2_offset5:${CURVATURE_LEVEL}\\;Mesh refinement/Cells per curvature radius=2\\;Volume diffusion/Interior offset=5"
+  --case "h2:${PACKING_8_H2}"
   --reference h2 --ranks 1)
 
 # The first closed pore (issue 26: "the time the first pore closes"
 # within 10 % of the finest run; doc/validation.md, "Packings: curvature
-# levels at the necks, and the first closed pore"): the central pore of
+# levels at the necks, the density's start, the first closed pore"): the
+# central pore of
 # eight tangent spheres like the 154's (pore_cubic_coupled_3d.prm, every
 # setting of packing_154_coupled_3d.prm, an eighth) at 2 h, h (the scene)
 # and h / 2 with lambda h and the filter fixed in um, and at h with a
@@ -296,7 +303,7 @@ set_tests_properties(packing_first_closure_cubic PROPERTIES
 packing_convergence_test(packing_resolution_sd_8
   packing_154_surface_diffusion_3d.prm 0.6 2 packing_8_like_154_3d.csv
   0.033 0.005,0.01,0.02,0.033
-  --case "coarse:Mesh refinement/Maximum level=4;Mesh refinement/Band width=0.08;Level set/Filter thickness=0.112"
+  --case "coarse:Mesh refinement/Maximum level=4\\;Mesh refinement/Band width=0.08\\;Level set/Filter thickness=0.112"
   --case "reference"
-  --case "fine:Mesh refinement/Minimum level=2;Mesh refinement/Maximum level=6;Mesh refinement/Band width=0.02;Level set/Filter thickness=0.028"
+  --case "fine:Mesh refinement/Minimum level=2\\;Mesh refinement/Maximum level=6\\;Mesh refinement/Band width=0.02\\;Level set/Filter thickness=0.028"
   --reference fine --ranks 1)
