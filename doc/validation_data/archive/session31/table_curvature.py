@@ -7,7 +7,13 @@ h_lim / h2_lim metrics and this session's runs (run8.sh). Prints Markdown.
   table_curvature.py
 """
 import csv
+import math
 import os
+import sys
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "..", "..", "scripts"))
+from packing_convergence import at  # noqa: E402  (rows, column, t)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 S30 = os.path.join(HERE, "..", "session30")
@@ -27,16 +33,6 @@ TIMES = [0.0025, 0.005, 0.0075, 0.01, 0.0125, 0.015]
 COLUMNS = [("relative_density", "density"), ("neck_mean", "mean neck")]
 
 
-def at(rows, t, column):
-    """Linear interpolation in time; None beyond the run's end."""
-    for a, b in zip(rows, rows[1:]):
-        ta, tb = float(a["time"]), float(b["time"])
-        if ta <= t + 1e-12 and t <= tb + 1e-12:
-            w = 0 if tb == ta else (t - ta) / (tb - ta)
-            return (1 - w) * float(a[column]) + w * float(b[column])
-    return None
-
-
 data = [(label, list(csv.DictReader(open(path)))) for label, path in RUNS]
 reference = data[1][1]
 for column, title in COLUMNS:
@@ -46,8 +42,8 @@ for column, title in COLUMNS:
     for label, rows in data:
         cells = []
         for t in TIMES:
-            v, r = at(rows, t, column), at(reference, t, column)
-            if v is None:
+            v, r = at(rows, column, t), at(reference, column, t)
+            if math.isnan(v):
                 cells.append("-")
                 continue
             text = f"{v:.5f}" if column == "neck_mean" else f"{v:.4f}"
@@ -66,8 +62,8 @@ for label, rows in data:
     v0, r0 = float(rows[0][c]), float(reference[0][c])
     cells = []
     for t in TIMES:
-        v, r = at(rows, t, c), at(reference, t, c)
-        if v is None:
+        v, r = at(rows, c, t), at(reference, c, t)
+        if math.isnan(v):
             cells.append("-")
             continue
         text = f"{v - v0:.4f}"
