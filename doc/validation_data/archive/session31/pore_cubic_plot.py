@@ -3,7 +3,7 @@
 h with other steps (study packing_first_closure_cubic): relative density
 of the control volume [0, R]^3 against time, the first closed pore
 marked. Reads pore_cubic_<case>_metrics.csv and _pore_events.csv (the
-study's runs, copied here); writes ../../pore_cubic_density.png.
+study's runs, copied here); writes pore_cubic_density.png.
 
   pore_cubic_plot.py
 """
@@ -43,5 +43,5 @@ ax.set_title("central pore of 8 tangent spheres; o: first closed pore")
 ax.legend(loc="upper left", fontsize=8)
 ax.grid(alpha=0.3)
 fig.tight_layout()
-fig.savefig(os.path.join(HERE, "..", "..", "pore_cubic_density.png"),
+fig.savefig(os.path.join(HERE, "pore_cubic_density.png"),
             dpi=110)
